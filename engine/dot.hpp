@@ -1,0 +1,33 @@
+#pragma once
+// DOT output of a whole graph, and in-process rendering of DOT with Graphviz.
+#include <functional>
+#include <ostream>
+#include <string>
+#include <unordered_set>
+
+#include "engine/graph.hpp"
+
+namespace loom::engine {
+
+struct DotStyle {
+  /// Label of an element; default "kind id".
+  std::function<std::string(Id)> label;
+  /// Elements drawn highlighted (e.g. the elements of a match).
+  std::unordered_set<Id> highlight;
+  std::string graph_name = "G";
+};
+
+/// Writes every live element and incidence (labelled "port[i]") as DOT, with
+/// Boost's write_graphviz. Element ids are the DOT node ids, so dumps of one
+/// graph are stable across runs.
+void write_dot(std::ostream& out, const Graph& g, const DotStyle& style = {});
+
+/// Renders DOT text to SVG in-process with Graphviz's gvc library, using the
+/// layout engine named in the graph's "layout" attribute, else `layout`.
+/// Throws std::runtime_error with Graphviz's message on failure.
+std::string render_svg(const std::string& dot, const std::string& layout = "dot");
+
+/// Escapes a string for a double-quoted DOT attribute value.
+std::string dot_quote(const std::string& s);
+
+}  // namespace loom::engine

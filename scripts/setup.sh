@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs what Loom needs from Debian (only what is missing), then configures
+# and builds into build/. Used by the README's two commands and by .ci/run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(g++ cmake ninja-build pkg-config libboost-graph-dev libfmt-dev doctest-dev
+          libcli11-dev nlohmann-json3-dev libeigen3-dev libgraphviz-dev graphviz
+          libgmsh-dev gmsh)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# Extra cmake arguments (e.g. -DLOOM_CHECK_INVARIANTS=ON from scripts/test.sh) pass through.
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE="${LOOM_BUILD_TYPE:-RelWithDebInfo}" "$@" >/dev/null
+cmake --build build --parallel "$(nproc)"

@@ -1,0 +1,56 @@
+#pragma once
+// What an accepted hex mesh is (docs/validity.md, after the design notes'
+// validity.md): combinatorial criteria 1-6 and the scaled Jacobian (7).
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/mesh/hex_mesh.hpp"
+#include "src/mesh/quad_surface.hpp"
+
+namespace loom {
+
+struct CriterionResult {
+  int number = 0;          ///< 1..7 as in validity.md
+  std::string name;        ///< short name, e.g. "no doublets" (criterion_name(number))
+  bool passed = true;
+  std::string detail;      ///< first offending element(s) when failed
+  /// False when the criterion could not be decided (2-6 need criterion 1 to
+  /// hold); such a criterion also has passed == false.
+  bool evaluated = true;
+};
+
+struct QualitySummary {
+  double min_scaled_jacobian = 0, mean_scaled_jacobian = 0;
+  std::size_t below_zero = 0;      ///< elements with scaled Jacobian <= 0
+  std::size_t below_0_2 = 0;       ///< elements with scaled Jacobian < 0.2
+};
+
+struct ValidityReport {
+  std::vector<CriterionResult> criteria;  ///< in order 1..7 (6 only with a boundary)
+  QualitySummary quality;
+  std::size_t hexes = 0, nodes = 0;
+  std::size_t boundary_components = 0;   ///< pieces of the mesh's boundary (when 5 was evaluated)
+  int boundary_genus = 0;                ///< summed over those pieces
+  bool combinatorial_valid() const;      ///< criteria 1-6 pass
+  bool valid() const;                    ///< all pass (7: every element > 0)
+  /// The first failed criterion, if any.
+  const CriterionResult* first_failure() const;
+};
+
+/// "distinct nodes", "faces in one or two hexes", "no doublets", "manifold",
+/// "Euler characteristic", "boundary matches surface", "positive scaled Jacobian".
+std::string criterion_name(int number);
+
+/// Scaled Jacobian of one hex: minimum over the 8 corners (Verdict's corner
+/// edge triples, VTK order) of det[e1,e2,e3]/(|e1||e2||e3|); -1 for a corner
+/// with a zero-length or non-finite edge, and for a hex with a node out of range.
+double scaled_jacobian(const HexMesh& mesh, std::size_t hex);
+
+/// Applies every criterion. With `boundary`, criterion 6 compares the mesh's
+/// boundary quads with it (same nodes at the same coordinates, one to one).
+/// Linear in the mesh size apart from sorting the boundary (O(n log n)).
+ValidityReport check_hex_mesh(const HexMesh& mesh, const QuadSurface* boundary = nullptr);
+
+}  // namespace loom

@@ -1,0 +1,58 @@
+// `loom stc MESH [--dot DIR] [--json] [--weld]`: the STC of a hex mesh (its
+// dual) or of a surface (the initial weave state), its counts and diagrams.
+#include <iostream>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "src/cli/command.hpp"
+#include "src/io/any_mesh.hpp"
+#include "src/mesh/surface_validation.hpp"
+#include "src/stc/build.hpp"
+#include "src/stc/sheet_diagram.hpp"
+#include "src/stc/summary.hpp"
+
+namespace {
+
+struct Options {
+  std::string mesh;
+  std::string dot_dir;
+  bool json = false;
+  bool weld = false;
+};
+
+int run(const Options& o) {
+  auto mesh = loom::read_surface_or_hex_mesh(o.mesh);
+  bool surface = std::holds_alternative<loom::QuadSurface>(mesh);
+  loom::stc::Stc stc;
+  if (surface) {
+    auto& s = std::get<loom::QuadSurface>(mesh);
+    loom::validate_surface(s, o.mesh, {.weld = o.weld});
+    stc = loom::stc::build_from_surface(s);
+  } else {
+    stc = loom::stc::build_from_hex_mesh(std::get<loom::HexMesh>(mesh));
+  }
+  auto summary = loom::stc::summarize(stc);
+  std::size_t files = o.dot_dir.empty() ? 0 : loom::stc::write_stc_dot(stc, o.dot_dir);
+  if (o.json) {
+    auto j = loom::stc::to_json(summary);
+    j["input"] = surface ? "surface" : "hex mesh";
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << loom::stc::to_text(summary, surface);
+    if (files) std::cout << fmt::format("wrote {} DOT/SVG files to {}\n", files, o.dot_dir);
+  }
+  return 0;
+}
+
+loom::cli::Register reg{{"stc", [](CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description("Build the STC of a hex mesh (its dual) or of a quad surface (the initial weave) and report it");
+  app.add_option("MESH", o->mesh, "hex mesh or quad surface (.obj .off .vtk .vtu .msh)")->required()->check(CLI::ExistingFile);
+  app.add_option("--dot", o->dot_dir, "write stc.dot and sheet-K.dot (with .svg) into this directory");
+  app.add_flag("--json", o->json, "print the counts as JSON");
+  app.add_flag("--weld", o->weld, "merge coincident surface nodes instead of rejecting them");
+  return std::function<int()>([o] { return run(*o); });
+}}};
+
+}  // namespace

@@ -1,0 +1,56 @@
+#pragma once
+// Test inputs for `loom gen`: closed, outward-oriented quad surfaces and
+// structured hex meshes (docs/generators.md). Every generator is deterministic,
+// welds shared nodes exactly (no two nodes at the same coordinates) and throws
+// InputError (where "gen KIND") for a non-positive size or a result larger than
+// kMaxGeneratedElements.
+#include <cstddef>
+
+#include "src/mesh/hex_mesh.hpp"
+#include "src/mesh/quad_surface.hpp"
+
+namespace loom::gen {
+
+/// Largest number of quads or hexes a generator produces.
+inline constexpr std::size_t kMaxGeneratedElements = 20'000'000;
+
+/// Surface of the box [0,a]x[0,b]x[0,c] with unit quads (a*b*2 + b*c*2 + c*a*2 quads).
+QuadSurface box(int a, int b, int c);
+/// Surface of an L-shaped prism: the unit blocks [0,2]x[0,1]x[0,1] and
+/// [0,1]x[1,2]x[0,1], each cut into n x n x n cells (14 n^2 quads).
+QuadSurface lshape(int n);
+/// Ring depth of the cylinder's cap O-grid: ceil(n/2) cells between the centre
+/// square (half-width 1/2) and the unit circle, so ring cells are about as deep
+/// as the centre cells are wide.
+int cylinder_ring_depth(int n);
+/// Cylinder of radius 1 and height 2 on the z axis, z in [0,2]. Each cap is an
+/// O-grid: an n x n centre square and four n x d ring blocks (d =
+/// cylinder_ring_depth(n)), so the rim has 4n edges; the wall has h layers.
+/// Quads: 2(n^2 + 4nd) + 4nh. It is the boundary of ogrid_cylinder(n, h).
+QuadSurface cylinder(int n, int h);
+/// The structured hex mesh of cylinder(n, h): the cap O-grid swept through h
+/// layers, n^2 + 4nd hexes per layer, positively oriented.
+HexMesh ogrid_cylinder(int n, int h);
+/// Unit sphere from the cube [-1,1]^3 with n x n quads per face, projected
+/// radially (6 n^2 quads, 6 n^2 + 2 nodes).
+QuadSurface cubesphere(int n);
+/// Schneiders' pyramid (16 quads, 18 nodes; literature.md §5, coordinates as listed).
+QuadSurface schneiders();
+/// A regular tetrahedron split into four hexes, its boundary: 12 quads, 14 nodes
+/// (literature.md §5; coordinates computed exactly rather than the rounded listing).
+QuadSurface tet4();
+/// The octagonal spindle (tetragonal trapezohedron): 8 quads, 10 nodes
+/// (literature.md §5, coordinates as listed).
+QuadSurface spindle();
+/// The parity-infeasible cube: the unit cube whose top face is split by a
+/// valence-2 node at (0.5,0.5,1) into two quads, 7 quads in all (literature.md
+/// §5). It is a valid closed surface but no hex mesh has it as boundary.
+QuadSurface odd7();
+/// Torus with n quads around the axis (major radius 2) and m around the tube
+/// (minor radius 1): n*m quads, genus 1. Needs n, m >= 3.
+QuadSurface torus(int n, int m);
+/// Structured hex mesh of [0,a]x[0,b]x[0,c] with unit cells, VTK node order,
+/// positively oriented; node (i,j,k) has index i + (a+1)(j + (b+1)k).
+HexMesh hexgrid(int a, int b, int c);
+
+}  // namespace loom::gen

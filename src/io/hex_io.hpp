@@ -1,0 +1,18 @@
+#pragma once
+// Reading and writing hexahedral meshes: .vtk (legacy), .vtu, .msh (MSH 4.1),
+// chosen by extension, VTK node order in memory. Writes are atomic.
+#include <filesystem>
+
+#include "src/mesh/hex_mesh.hpp"
+
+namespace loom {
+
+/// Reads a hex mesh. Throws InputError for unreadable or malformed files and for
+/// any volume cell that is not a hexahedron. Boundary quads stored in the file
+/// are ignored.
+HexMesh read_hex_mesh(const std::filesystem::path& file);
+
+/// Writes a hex mesh atomically; the format follows the extension.
+void write_hex_mesh(const std::filesystem::path& file, const HexMesh& mesh);
+
+}  // namespace loom

@@ -1,0 +1,55 @@
+#include "src/stc/primal.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace loom::stc {
+
+Id corner_node(const Stc& stc, Id hex, unsigned k) {
+  const auto& [a, b, c] = corner_faces[k];
+  Id fa = stc.hex_face(hex, a), fb = stc.hex_face(hex, b), fc = stc.hex_face(hex, c);
+  auto has = [&](Id f, Id n) {
+    for (unsigned i = 0; i < 4; ++i)
+      if (stc.face_node(f, i) == n) return true;
+    return false;
+  };
+  Id found = no_element;
+  for (unsigned i = 0; i < 4; ++i) {
+    Id n = stc.face_node(fa, i);
+    if (n == found || !has(fb, n) || !has(fc, n)) continue;
+    if (found != no_element) return no_element;
+    found = n;
+  }
+  return found;
+}
+
+HexMesh to_hex_mesh(const Stc& stc) {
+  const engine::Graph& g = stc.graph();
+  const StcSchema& ids = stc.ids();
+  for (Id f : g.members(ids.face))
+    if (stc.is_whisker(f)) throw std::runtime_error(fmt::format("primal construction: face {} is still a whisker", f));
+
+  HexMesh mesh;
+  std::vector<std::uint32_t> index(g.id_bound(), UINT32_MAX);
+  for (Id n : g.members(ids.node)) {
+    std::int32_t p = g.get(n, ids.node_point);
+    if (p < 0 || static_cast<std::size_t>(p) >= stc.points().size())
+      throw std::runtime_error(fmt::format("primal construction: node {} has no position", n));
+    index[n] = static_cast<std::uint32_t>(mesh.points.size());
+    mesh.points.push_back(stc.points()[static_cast<std::size_t>(p)]);
+  }
+  for (Id h : g.members(ids.hex)) {
+    Hex hex{};
+    for (unsigned k = 0; k < 8; ++k) {
+      Id n = corner_node(stc, h, k);
+      if (n == no_element)
+        throw std::runtime_error(fmt::format("primal construction: hex {} is degenerate at corner {}", h, k));
+      hex[k] = index[n];
+    }
+    mesh.hexes.push_back(hex);
+  }
+  return mesh;
+}
+
+}  // namespace loom::stc

@@ -1,0 +1,24 @@
+#pragma once
+// Primal construction: the hex mesh dual to a complete STC.
+#include <array>
+
+#include "src/mesh/hex_mesh.hpp"
+#include "src/stc/stc.hpp"
+
+namespace loom::stc {
+
+/// For VTK corner k of a hex, the three hex face slots that meet there.
+inline constexpr std::array<std::array<unsigned, 3>, 8> corner_faces{{
+    {0, 2, 4}, {0, 2, 5}, {0, 3, 5}, {0, 3, 4}, {1, 2, 4}, {1, 2, 5}, {1, 3, 5}, {1, 3, 4}}};
+
+/// The node at corner k of `hex`: the one node common to its three faces
+/// corner_faces[k]; no_element when the hex is degenerate there.
+Id corner_node(const Stc& stc, Id hex, unsigned k);
+
+/// Hex connectivity of a complete STC (no whisker left): one point per node in
+/// node id order, at stc.points()[node.point]; one hex per STC hex in id order,
+/// VTK node order from the hex's face slots. Throws std::runtime_error naming
+/// the first hex that is degenerate, a whisker left, or an unplaced node.
+HexMesh to_hex_mesh(const Stc& stc);
+
+}  // namespace loom::stc

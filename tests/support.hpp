@@ -1,0 +1,37 @@
+#pragma once
+// Shared helpers for the doctest suites: run the CLI, make scratch directories.
+#include <filesystem>
+#include <string>
+
+namespace loom::test {
+
+struct CliResult {
+  int status = -1;     ///< exit status (128+N if killed by signal N)
+  std::string out;     ///< stdout
+  std::string err;     ///< stderr
+};
+
+/// Runs `build/loom ARGS` through the shell (args are passed verbatim).
+CliResult run_cli(const std::string& args);
+
+/// A fresh, empty directory under the system temp dir, removed at destruction.
+class ScratchDir {
+public:
+  explicit ScratchDir(const std::string& tag);
+  ~ScratchDir();
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+  std::filesystem::path path_;
+};
+
+/// Path of a file under tests/data.
+inline std::filesystem::path data(const std::string& name) { return std::filesystem::path(LOOM_TEST_DATA) / name; }
+
+/// Number of lines in s (a final line without '\n' counts).
+int count_lines(const std::string& s);
+
+}  // namespace loom::test
