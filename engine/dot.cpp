@@ -1,5 +1,6 @@
 #include "engine/dot.hpp"
 
+#include <algorithm>
 #include <mutex>
 #include <stdexcept>
 
@@ -38,7 +39,30 @@ void write_dot(std::ostream& out, const Graph& g, const DotStyle& style) {
   auto graph_writer = [&](std::ostream& os) {
     os << "label=" << dot_quote(style.graph_name) << ";\nnode [shape=box, fontsize=10];\nedge [fontsize=8];\n";
   };
-  boost::write_graphviz(out, g, vertex_writer, edge_writer, graph_writer);
+  if (style.only.empty()) {
+    boost::write_graphviz(out, g, vertex_writer, edge_writer, graph_writer);
+    return;
+  }
+  std::vector<Id> shown(style.only.begin(), style.only.end());
+  std::sort(shown.begin(), shown.end());
+  out << "digraph G {\n";
+  graph_writer(out);
+  for (Id v : shown)
+    if (g.alive(v)) {
+      out << v;
+      vertex_writer(out, v);
+      out << ";\n";
+    }
+  for (Id v : shown) {
+    if (!g.alive(v)) continue;
+    for (SlotId s = g.first_slot(v), e = s + g.slot_count(v); s < e; ++s)
+      if (Id t = g.slot_target(s); t != no_element && style.only.count(t)) {
+        out << v << "->" << t;
+        edge_writer(out, Incidence{s});
+        out << ";\n";
+      }
+  }
+  out << "}\n";
 }
 
 namespace {

@@ -15,11 +15,13 @@ struct DotStyle {
   /// Elements drawn highlighted (e.g. the elements of a match).
   std::unordered_set<Id> highlight;
   std::string graph_name = "G";
+  /// When not empty, only these elements (and incidences between them) are drawn.
+  std::unordered_set<Id> only;
 };
 
 /// Writes every live element and incidence (labelled "port[i]") as DOT, with
-/// Boost's write_graphviz. Element ids are the DOT node ids, so dumps of one
-/// graph are stable across runs.
+/// Boost's write_graphviz (or, with `only`, the elements listed). Element ids
+/// are the DOT node ids, so dumps of one graph are stable across runs.
 void write_dot(std::ostream& out, const Graph& g, const DotStyle& style = {});
 
 /// Renders DOT text to SVG in-process with Graphviz's gvc library, using the

@@ -17,13 +17,14 @@ Id Graph::add(KindId kind) {
   const KindSpec& spec = schema_->kind(kind);
   Id id = static_cast<Id>(elements_.size());
   auto local = static_cast<std::uint32_t>(kind_members_[kind].size());
-  elements_.push_back(Element{static_cast<SlotId>(slots_.size()), no_slot, local, kind, true});
+  elements_.push_back(Element{static_cast<SlotId>(slots_.size()), no_slot, 0, local, kind, true});
   for (unsigned i = 0; i < spec.slot_count; ++i) slots_.push_back(Slot{id, no_element, no_slot, no_slot});
   kind_members_[kind].push_back(id);
   for (std::size_t c = 0; c < spec.attributes.size(); ++c)
     columns_[kind][c].push_back(schema_->attribute(spec.attributes[c]).default_value);
   ++kind_live_[kind];
   ++live_;
+  if (log_) log_->push_back({id, Change::Kind::created, 0});
   return id;
 }
 
@@ -33,6 +34,7 @@ void Graph::remove(Id e) {
   for (SlotId s = el.first_slot, end = s + slot_count(e); s < end; ++s) set_slot(s, no_element);
   while (el.in_head != no_slot) set_slot(el.in_head, no_element);
   el.alive = false;
+  if (log_) log_->push_back({e, Change::Kind::removed, 0});
   kind_members_[el.kind][el.local] = no_element;
   --kind_live_[el.kind];
   --live_;
@@ -49,6 +51,12 @@ std::vector<Id> Graph::members(KindId kind) const {
 void Graph::set_slot(SlotId s, Id target) {
   Slot& sl = slots_[s];
   if (sl.target == target) return;
+  if (log_) {
+    auto port = slot_port(s);
+    log_->push_back({sl.owner, Change::Kind::out, port});
+    if (sl.target != no_element) log_->push_back({sl.target, Change::Kind::in, port});
+    if (target != no_element) log_->push_back({target, Change::Kind::in, port});
+  }
   if (sl.target != no_element) {
     ring_erase(s);
     --linked_;
@@ -67,6 +75,7 @@ void Graph::ring_insert(SlotId s) {
   sl.next = head;
   if (head != no_slot) slots_[head].prev = s;
   head = s;
+  ++elements_[sl.target].in_count;
 }
 
 void Graph::ring_erase(SlotId s) {
@@ -75,6 +84,7 @@ void Graph::ring_erase(SlotId s) {
   else elements_[sl.target].in_head = sl.next;
   if (sl.next != no_slot) slots_[sl.next].prev = sl.prev;
   sl.next = sl.prev = no_slot;
+  --elements_[sl.target].in_count;
 }
 
 PortId Graph::slot_port(SlotId s) const {
@@ -84,12 +94,6 @@ PortId Graph::slot_port(SlotId s) const {
 
 unsigned Graph::slot_index(SlotId s) const {
   return s - elements_[slots_[s].owner].first_slot - schema_->port(slot_port(s)).first_slot;
-}
-
-unsigned Graph::in_degree(Id e) const {
-  unsigned n = 0;
-  for (SlotId s = elements_[e].in_head; s != no_slot; s = slots_[s].next) ++n;
-  return n;
 }
 
 void Graph::redirect_incoming(Id from, Id to) {
@@ -104,7 +108,10 @@ std::int32_t Graph::get(Id e, AttrId a) const {
 
 void Graph::set(Id e, AttrId a, std::int32_t value) {
   const Element& el = elements_[e];
-  columns_[el.kind][schema_->attribute(a).column][el.local] = value;
+  std::int32_t& cell = columns_[el.kind][schema_->attribute(a).column][el.local];
+  if (cell == value) return;
+  cell = value;
+  if (log_) log_->push_back({e, Change::Kind::attribute, a});
 }
 
 std::vector<Id> Graph::compact() {
@@ -163,11 +170,13 @@ std::string Graph::check_structure() const {
       }
     }
     SlotId prev = no_slot;
-    for (SlotId s = el.in_head; s != no_slot; s = slots_[s].next) {
+    std::uint32_t ring = 0;
+    for (SlotId s = el.in_head; s != no_slot; s = slots_[s].next, ++ring) {
       if (slots_[s].target != e) return fmt::format("incoming ring of {} holds slot {} aimed elsewhere", e, s);
       if (slots_[s].prev != prev) return fmt::format("incoming ring of {} is broken at slot {}", e, s);
       prev = s;
     }
+    if (ring != el.in_count) return fmt::format("element {} counts {} incoming slots but its ring has {}", e, el.in_count, ring);
   }
   std::size_t ringed = 0;
   for (Id e = 0; e < elements_.size(); ++e) ringed += elements_[e].alive ? in_degree(e) : 0;

@@ -84,7 +84,7 @@ public:
   };
   /// The slots that point at `e` (most recently linked first).
   IncomingRange incoming(Id e) const { return {this, elements_[e].in_head}; }
-  unsigned in_degree(Id e) const;
+  unsigned in_degree(Id e) const { return elements_[e].in_count; }
   SlotId next_incoming(SlotId s) const { return slots_[s].next; }
   SlotId first_incoming(Id e) const { return elements_[e].in_head; }
 
@@ -95,6 +95,18 @@ public:
   // --- attributes ---------------------------------------------------------
   std::int32_t get(Id e, AttrId a) const;
   void set(Id e, AttrId a, std::int32_t value);
+
+  // --- change log -----------------------------------------------------------
+  /// One change to the graph, as seen from one element: a slot of its own
+  /// (`out`), a slot pointing at it (`in`), an attribute, its creation or removal.
+  struct Change {
+    enum class Kind : std::uint8_t { out, in, attribute, created, removed };
+    Id element;
+    Kind kind;
+    std::uint16_t which;  ///< port (out, in) or attribute
+  };
+  /// While set, every change is appended to `log` (nullptr stops logging).
+  void set_change_log(std::vector<Change>* log) { log_ = log; }
 
   // --- ids ----------------------------------------------------------------
   /// Drops tombstones and renumbers elements and slots, keeping their order.
@@ -109,6 +121,7 @@ private:
   struct Element {
     SlotId first_slot;
     SlotId in_head;
+    std::uint32_t in_count;  ///< length of the incoming ring
     std::uint32_t local;  ///< index among the elements of its kind (attribute row)
     KindId kind;
     bool alive;
@@ -129,6 +142,7 @@ private:
   std::vector<std::size_t> kind_live_;
   std::vector<std::vector<std::vector<std::int32_t>>> columns_;  ///< [kind][column][local]
   std::size_t live_ = 0, linked_ = 0;
+  std::vector<Change>* log_ = nullptr;
 
   friend class IncomingIterator;
 };

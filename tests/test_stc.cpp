@@ -2,6 +2,7 @@
 // construction; invariants; Boost.Graph algorithms on the STC.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <map>
 
 #include <boost/graph/breadth_first_search.hpp>
@@ -11,6 +12,8 @@
 #include "engine/graph_traits.hpp"
 #include "src/gen/generators.hpp"
 #include "src/io/gmsh_session.hpp"
+#include "src/io/hex_io.hpp"
+#include "tests/support.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/loops.hpp"
 #include "src/stc/primal.hpp"
@@ -21,33 +24,22 @@ using namespace loom::stc;
 
 namespace {
 /// An unstructured hex mesh: Gmsh tetrahedralizes a box and splits every tet
-/// into four hexes (Mesh.SubdivisionAlgorithm = 2).
+/// into four hexes (Mesh.SubdivisionAlgorithm = 2); written as MSH and read back.
 HexMesh gmsh_tet_split_box() {
-  HexMesh mesh;
-  with_gmsh("tet-split box", "", [&] {
-  gmsh::model::add("tetsplit");
-  gmsh::model::occ::addBox(0, 0, 0, 1, 1.5, 2);
-  gmsh::model::occ::synchronize();
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.6);
-  gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 2);
-  gmsh::model::mesh::generate(3);
-  std::vector<std::size_t> tags;
-  std::vector<double> coords, param;
-  gmsh::model::mesh::getNodes(tags, coords, param);
-  std::map<std::size_t, std::uint32_t> index;
-  for (std::size_t i = 0; i < tags.size(); ++i) {
-    index[tags[i]] = static_cast<std::uint32_t>(mesh.points.size());
-    mesh.points.push_back({coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]});
-  }
-  std::vector<std::size_t> elems, nodes;
-  gmsh::model::mesh::getElementsByType(5, elems, nodes);
-  for (std::size_t e = 0; e < elems.size(); ++e) {
-    Hex h{};
-    for (unsigned k = 0; k < 8; ++k) h[k] = index.at(nodes[8 * e + k]);
-    mesh.hexes.push_back(h);
-  }
+  loom::test::ScratchDir dir("tetsplit");
+  auto file = dir / "tetsplit.msh";
+  run_gmsh_isolated("tet-split box", "", [&] {
+    gmsh::model::add("tetsplit");
+    gmsh::model::occ::addBox(0, 0, 0, 1, 1.5, 2);
+    gmsh::model::occ::synchronize();
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.6);
+    gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 2);
+    gmsh::model::mesh::generate(3);
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::write(file.string());
+    return std::string();
   });
-  return mesh;
+  return read_hex_mesh(file);
 }
 }  // namespace
 

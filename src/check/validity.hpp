@@ -12,10 +12,10 @@
 namespace loom {
 
 struct CriterionResult {
-  int number = 0;          ///< 1..7 as in validity.md
-  std::string name;        ///< short name, e.g. "no doublets" (criterion_name(number))
+  int number = 0;    ///< 1..7 as in validity.md
+  std::string name;  ///< short name, e.g. "no doublets" (criterion_name(number))
   bool passed = true;
-  std::string detail;      ///< first offending element(s) when failed
+  std::string detail;  ///< first offending element(s) when failed
   /// False when the criterion could not be decided (2-6 need criterion 1 to
   /// hold); such a criterion also has passed == false.
   bool evaluated = true;
@@ -23,18 +23,18 @@ struct CriterionResult {
 
 struct QualitySummary {
   double min_scaled_jacobian = 0, mean_scaled_jacobian = 0;
-  std::size_t below_zero = 0;      ///< elements with scaled Jacobian <= 0
-  std::size_t below_0_2 = 0;       ///< elements with scaled Jacobian < 0.2
+  std::size_t below_zero = 0;  ///< elements with scaled Jacobian <= 0
+  std::size_t below_0_2 = 0;   ///< elements with scaled Jacobian < 0.2
 };
 
 struct ValidityReport {
   std::vector<CriterionResult> criteria;  ///< in order 1..7 (6 only with a boundary)
   QualitySummary quality;
   std::size_t hexes = 0, nodes = 0;
-  std::size_t boundary_components = 0;   ///< pieces of the mesh's boundary (when 5 was evaluated)
-  int boundary_genus = 0;                ///< summed over those pieces
-  bool combinatorial_valid() const;      ///< criteria 1-6 pass
-  bool valid() const;                    ///< all pass (7: every element > 0)
+  std::size_t boundary_components = 0;  ///< pieces of the mesh's boundary (when 5 was evaluated)
+  int boundary_genus = 0;               ///< summed over those pieces
+  bool combinatorial_valid() const;     ///< criteria 1-6 pass
+  bool valid() const;                   ///< all pass (7: every element > 0)
   /// The first failed criterion, if any.
   const CriterionResult* first_failure() const;
 };

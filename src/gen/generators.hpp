@@ -47,7 +47,7 @@ QuadSurface spindle();
 /// §5). It is a valid closed surface but no hex mesh has it as boundary.
 QuadSurface odd7();
 /// Torus with n quads around the axis (major radius 2) and m around the tube
-/// (minor radius 1): n*m quads, genus 1. Needs n, m >= 3.
+/// (minor radius 1): n*m quads, genus 1. Needs n, m >= 3 and n*m even.
 QuadSurface torus(int n, int m);
 /// Structured hex mesh of [0,a]x[0,b]x[0,c] with unit cells, VTK node order,
 /// positively oriented; node (i,j,k) has index i + (a+1)(j + (b+1)k).

@@ -198,6 +198,7 @@ Stc build_from_hex_mesh(const HexMesh& mesh) {
         g.link(f, ids.face_cell, 1, no_element);
       }
       g.set(f, ids.face_boundary, boundary++);
+      for (unsigned i = 0; i < 4; ++i) g.set(stc.face_node(f, i), ids.node_boundary, 1);
     }
   group_sheets_and_chords(stc);
   stc.debug_check();
@@ -218,6 +219,7 @@ Stc build_from_surface(const QuadSurface& surface) {
     bool same = false;
     Id f = complex.face(surface.quads[q], same);
     g.set(f, ids.face_boundary, static_cast<std::int32_t>(q));
+    for (unsigned i = 0; i < 4; ++i) g.set(stc.face_node(f, i), ids.node_boundary, 1);
   }
   group_sheets_and_chords(stc);
   stc.debug_check();

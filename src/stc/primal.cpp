@@ -24,13 +24,14 @@ Id corner_node(const Stc& stc, Id hex, unsigned k) {
   return found;
 }
 
-HexMesh to_hex_mesh(const Stc& stc) {
+HexMesh to_hex_mesh(const Stc& stc, std::vector<bool>* on_boundary) {
   const engine::Graph& g = stc.graph();
   const StcSchema& ids = stc.ids();
   for (Id f : g.members(ids.face))
     if (stc.is_whisker(f)) throw std::runtime_error(fmt::format("primal construction: face {} is still a whisker", f));
 
   HexMesh mesh;
+  if (on_boundary) on_boundary->clear();
   std::vector<std::uint32_t> index(g.id_bound(), UINT32_MAX);
   for (Id n : g.members(ids.node)) {
     std::int32_t p = g.get(n, ids.node_point);
@@ -38,6 +39,7 @@ HexMesh to_hex_mesh(const Stc& stc) {
       throw std::runtime_error(fmt::format("primal construction: node {} has no position", n));
     index[n] = static_cast<std::uint32_t>(mesh.points.size());
     mesh.points.push_back(stc.points()[static_cast<std::size_t>(p)]);
+    if (on_boundary) on_boundary->push_back(g.get(n, ids.node_boundary) != 0);
   }
   for (Id h : g.members(ids.hex)) {
     Hex hex{};

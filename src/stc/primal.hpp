@@ -1,6 +1,7 @@
 #pragma once
 // Primal construction: the hex mesh dual to a complete STC.
 #include <array>
+#include <vector>
 
 #include "src/mesh/hex_mesh.hpp"
 #include "src/stc/stc.hpp"
@@ -19,6 +20,8 @@ Id corner_node(const Stc& stc, Id hex, unsigned k);
 /// node id order, at stc.points()[node.point]; one hex per STC hex in id order,
 /// VTK node order from the hex's face slots. Throws std::runtime_error naming
 /// the first hex that is degenerate, a whisker left, or an unplaced node.
-HexMesh to_hex_mesh(const Stc& stc);
+/// With `on_boundary`, also says for each point whether its node lies on the
+/// boundary surface.
+HexMesh to_hex_mesh(const Stc& stc, std::vector<bool>* on_boundary = nullptr);
 
 }  // namespace loom::stc

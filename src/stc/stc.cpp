@@ -24,7 +24,9 @@ const StcSchema& StcSchema::get() {
     r.edge_sheet = s->add_port(r.edge, "sheet", 1, r.sheet);
     r.chord_sheet = s->add_port(r.chord, "sheet", 2, r.sheet);
     r.face_boundary = s->add_attribute(r.face, "boundary", -1);
+    r.face_layer = s->add_attribute(r.face, "layer", 0);
     r.node_point = s->add_attribute(r.node, "point", -1);
+    r.node_boundary = s->add_attribute(r.node, "boundary", 0);
     r.hex_source = s->add_attribute(r.hex, "source", -1);
     r.sheet_self = s->add_attribute(r.sheet, "self", 0);
     r.chord_self = s->add_attribute(r.chord, "self", 0);

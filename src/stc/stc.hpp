@@ -15,9 +15,12 @@
 //                                          the chord lies twice on one sheet)
 //   sheet               (none)
 // Attributes: face.boundary (index of the boundary quad it is, or -1),
-// node.point (index into points(), or -1 while unplaced), hex.source (index in
-// the hex mesh it was built from, or -1), sheet.self (1 if self-intersecting),
-// chord.self (1 if it passes a hex twice or lies twice on one sheet).
+// face.layer (0 on the boundary; a face made by a weave is one layer deeper
+// than the faces it was made from), node.point (index into points(), or -1
+// while unplaced), node.boundary (1 on the boundary surface), hex.source (index
+// in the hex mesh it was built from, or -1), sheet.self (1 if
+// self-intersecting), chord.self (1 if it passes a hex twice or lies twice on
+// one sheet).
 //
 // Hex face order, for a hex built from VTK nodes 0..7: face 0 = 0123, 1 = 4567,
 // 2 = 0154, 3 = 3267, 4 = 0374, 5 = 1265. Node k of the hex is the node common
@@ -42,7 +45,7 @@ using engine::no_element;
 struct StcSchema {
   engine::KindId hex, face, edge, node, chord, sheet;
   engine::PortId hex_face, face_edge, face_node, face_cell, face_chord, edge_node, edge_sheet, chord_sheet;
-  engine::AttrId face_boundary, node_point, hex_source, sheet_self, chord_self;
+  engine::AttrId face_boundary, face_layer, node_point, node_boundary, hex_source, sheet_self, chord_self;
   std::shared_ptr<const engine::Schema> schema;
   /// The one schema shared by every Stc.
   static const StcSchema& get();

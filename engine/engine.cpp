@@ -1,0 +1,214 @@
+#include "engine/engine.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <tuple>
+
+#include <fmt/format.h>
+
+namespace loom::engine {
+
+Engine::Engine(Graph& graph, std::vector<Rule> rules, Actions actions, Strategy strategy)
+    : g_(graph), rules_(std::move(rules)), actions_(std::move(actions)), strategy_(std::move(strategy)),
+      matcher_(graph), state_(rules_.size()), rng_(strategy_.seed) {
+  for (const Rule& r : rules_) check_actions(r, actions_);
+  for (std::size_t i = 0; i < rules_.size(); ++i) state_[i].rank = rules_[i].priority;
+  if (strategy_.kind == Strategy::Kind::sequence) {
+    for (auto& s : state_) s.enabled = false;
+    for (std::size_t pos = 0; pos < strategy_.order.size(); ++pos) {
+      auto it = std::find_if(rules_.begin(), rules_.end(), [&](const Rule& r) { return r.name == strategy_.order[pos]; });
+      if (it == rules_.end())
+        throw std::invalid_argument(fmt::format("strategy names rule '{}', which is not loaded", strategy_.order[pos]));
+      auto& st = state_[static_cast<std::size_t>(it - rules_.begin())];
+      st.enabled = true;
+      st.rank = -static_cast<std::int64_t>(pos);
+    }
+  }
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < rules_.size(); ++i)
+    if (state_[i].enabled) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return state_[a].rank > state_[b].rank; });
+  for (std::size_t i : order) {
+    if (tiers_.empty() || state_[tiers_.back().front()].rank != state_[i].rank) tiers_.emplace_back();
+    tiers_.back().push_back(i);
+  }
+  rescan();
+}
+
+void Engine::rescan() {
+  for (std::size_t r = 0; r < rules_.size(); ++r)
+    if (state_[r].enabled)
+      for (Id a : g_.members(rules_[r].vars[rules_[r].anchor].kind)) offer(r, a);
+}
+
+void Engine::offer(std::size_t r, Id anchor) {
+  const Rule& rule = rules_[r];
+  RuleState& st = state_[r];
+  if (!g_.alive(anchor) || g_.kind(anchor) != rule.vars[rule.anchor].kind) return;
+  ++counters_.candidates;
+  if (strategy_.kind == Strategy::Kind::random) {
+    if (st.pooled.size() <= anchor) st.pooled.resize(g_.id_bound() + 1024, false);
+    if (!st.pooled[anchor]) st.pooled[anchor] = true, st.pool.push_back(anchor);
+    return;
+  }
+  Match m;
+  ++counters_.match_attempts;
+  if (!matcher_.first_at(rule, anchor, m)) return;
+  st.queue.push({rule.order ? matcher_.evaluate(*rule.order, m) : 0, anchor});
+}
+
+bool Engine::step(Application* applied) {
+  for (const auto& tier : tiers_) {
+    if (strategy_.kind == Strategy::Kind::random) {
+      if (try_random_tier(tier, applied)) return true;
+      continue;
+    }
+    for (std::size_t r : tier)
+      if (try_rule_queue(r, applied)) return true;
+  }
+  return false;
+}
+
+bool Engine::try_rule_queue(std::size_t r, Application* applied) {
+  const Rule& rule = rules_[r];
+  auto& queue = state_[r].queue;
+  while (!queue.empty()) {
+    Entry top = queue.top();
+    queue.pop();
+    Match m;
+    ++counters_.match_attempts;
+    if (!g_.alive(top.anchor) || !matcher_.first_at(rule, top.anchor, m)) continue;
+    std::int64_t key = rule.order ? matcher_.evaluate(*rule.order, m) : 0;
+    if (key > top.key) {  // its key grew since it was queued: take its new place
+      queue.push({key, top.anchor});
+      continue;
+    }
+    apply(r, m, applied);
+    return true;
+  }
+  return false;
+}
+
+bool Engine::try_random_tier(const std::vector<std::size_t>& tier, Application* applied) {
+  for (;;) {
+    std::size_t total = 0;
+    for (std::size_t r : tier) total += state_[r].pool.size();
+    if (total == 0) return false;
+    std::size_t pick = std::uniform_int_distribution<std::size_t>(0, total - 1)(rng_);
+    std::size_t r = tier.front();
+    for (std::size_t t : tier) {
+      if (pick < state_[t].pool.size()) {
+        r = t;
+        break;
+      }
+      pick -= state_[t].pool.size();
+    }
+    RuleState& st = state_[r];
+    Id anchor = st.pool[pick];
+    st.pool[pick] = st.pool.back();
+    st.pool.pop_back();
+    st.pooled[anchor] = false;
+    Match m;
+    ++counters_.match_attempts;
+    if (!g_.alive(anchor) || !matcher_.first_at(rules_[r], anchor, m)) continue;
+    apply(r, m, applied);
+    return true;
+  }
+}
+
+void Engine::apply(std::size_t r, Match& m, Application* applied) {
+  ++counters_.steps;
+  ++applications_[rules_[r].name];
+  if (applied) {
+    applied->step = counters_.steps;
+    applied->rule = &rules_[r];
+    applied->matched = m;
+  }
+  log_.clear();
+  g_.set_change_log(&log_);
+  try {
+    apply_rewrite(g_, m, actions_);
+  } catch (...) {
+    g_.set_change_log(nullptr);
+    throw;
+  }
+  g_.set_change_log(nullptr);
+  if (applied) applied->result = m;
+  process_changes();
+}
+
+void Engine::trace(const Rule& rule, int var, Id element, std::vector<Id>& anchors) {
+  std::vector<Id> current{element}, next;
+  while (var != rule.anchor) {
+    const Variable& v = rule.vars[var];
+    if (v.parent < 0) return;
+    next.clear();
+    for (Id e : current) {
+      if (!g_.alive(e)) continue;
+      if (v.via == Variable::Via::lookup) {  // parent.port -> e: the owners of such slots
+        for (SlotId s : g_.incoming(e))
+          if (g_.slot_port(s) == v.via_port) next.push_back(g_.slot_owner(s));
+      } else {  // e.port -> parent
+        const PortSpec& p = g_.schema().port(v.via_port);
+        for (unsigned i = 0; i < p.arity; ++i)
+          if (Id t = g_.at(e, v.via_port, i); t != no_element) next.push_back(t);
+      }
+    }
+    std::swap(current, next);
+    var = v.parent;
+  }
+  anchors.insert(anchors.end(), current.begin(), current.end());
+}
+
+void Engine::process_changes() {
+  std::sort(log_.begin(), log_.end(), [](const Graph::Change& a, const Graph::Change& b) {
+    return std::tie(a.element, a.kind, a.which) < std::tie(b.element, b.kind, b.which);
+  });
+  log_.erase(std::unique(log_.begin(), log_.end(), [](const Graph::Change& a, const Graph::Change& b) {
+               return a.element == b.element && a.kind == b.kind && a.which == b.which;
+             }), log_.end());
+  using Kind = Graph::Change::Kind;
+  std::vector<Id> anchors;
+  for (std::size_t r = 0; r < rules_.size(); ++r) {
+    if (!state_[r].enabled) continue;
+    const Rule& rule = rules_[r];
+    if (rule.global) {
+      ++counters_.rescans;
+      for (Id a : g_.members(rule.vars[rule.anchor].kind)) offer(r, a);
+      continue;
+    }
+    anchors.clear();
+    for (const Graph::Change& c : log_) {
+      KindId k = g_.kind(c.element);
+      for (int v = 0; v < static_cast<int>(rule.vars.size()); ++v) {
+        const Variable& var = rule.vars[v];
+        if (var.kind != k || var.created || var.nac == -2) continue;
+        bool relevant = false;
+        switch (c.kind) {
+          case Kind::out: relevant = std::count(var.out_ports.begin(), var.out_ports.end(), c.which) > 0; break;
+          case Kind::in: relevant = std::count(var.in_ports.begin(), var.in_ports.end(), c.which) > 0; break;
+          case Kind::attribute: relevant = std::count(var.attrs.begin(), var.attrs.end(), c.which) > 0; break;
+          case Kind::created: relevant = v == rule.anchor; break;
+          case Kind::removed: break;
+        }
+        if (relevant) trace(rule, v, c.element, anchors);
+      }
+      for (const CountWatch& w : rule.count_watches) {
+        bool reads = (c.kind == Kind::attribute && std::count(w.attrs.begin(), w.attrs.end(), c.which)) ||
+                     (c.kind == Kind::out && std::count(w.ports.begin(), w.ports.end(), c.which));
+        if (!reads || w.kind != k || !g_.alive(c.element)) continue;
+        for (unsigned i = 0; i < g_.schema().port(w.port).arity; ++i)
+          if (Id t = g_.at(c.element, w.port, i); t != no_element) trace(rule, w.target, t, anchors);
+      }
+    }
+    if (stamp_.size() < g_.id_bound()) stamp_.resize(g_.id_bound() + 1024, 0);
+    ++stamp_now_;
+    for (Id a : anchors)
+      if (stamp_[a] != stamp_now_) {
+        stamp_[a] = stamp_now_;
+        offer(r, a);
+      }
+  }
+}
+
+}  // namespace loom::engine

@@ -1,0 +1,93 @@
+#pragma once
+// Engine: applies rules to a graph, one match at a time, under a strategy.
+//
+// Matching is anchored and incremental. Each rule keeps a queue of candidate
+// anchors. At the start every element of the anchor's kind is a candidate;
+// after a rewrite, each change the graph logged (a slot, an incoming
+// incidence, an attribute, a creation) is traced back along the rule's search
+// plan to the anchors whose match it could have created, and only those are
+// tried again. So the cost of a step follows what the step changed, not the
+// size of the graph. A candidate is matched when queued and once more when
+// chosen, so stale candidates are dropped.
+#include <cstdint>
+#include <map>
+#include <queue>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "engine/graph.hpp"
+#include "engine/matcher.hpp"
+#include "engine/rewriter.hpp"
+#include "engine/rule.hpp"
+#include "engine/strategy.hpp"
+
+namespace loom::engine {
+
+struct Application {
+  std::size_t step = 0;        ///< 1 for the first application
+  const Rule* rule = nullptr;
+  Match matched;               ///< the elements matched, before the rewrite
+  Match result;                ///< after: created elements bound, merged ones replaced
+};
+
+struct EngineCounters {
+  std::size_t steps = 0;
+  std::size_t match_attempts = 0;   ///< anchored searches run
+  std::size_t candidates = 0;       ///< anchors queued
+  std::size_t rescans = 0;          ///< full rescans (rules with unanchored parts)
+};
+
+class Engine {
+public:
+  /// Throws RuleError if a rule calls an unknown action, std::invalid_argument
+  /// if a sequence strategy names an unknown rule.
+  Engine(Graph& graph, std::vector<Rule> rules, Actions actions, Strategy strategy);
+
+  /// Applies one match, chosen by the strategy. Returns false when no rule applies.
+  bool step(Application* applied = nullptr);
+
+  const std::vector<Rule>& rules() const { return rules_; }
+  const EngineCounters& counters() const { return counters_; }
+  /// Applications so far, by rule name.
+  const std::map<std::string, std::size_t>& applications() const { return applications_; }
+  /// Makes every element a candidate again (after the graph changed outside the engine).
+  void rescan();
+
+private:
+  struct Entry {
+    std::int64_t key;
+    Id anchor;
+    bool operator>(const Entry& o) const { return key != o.key ? key > o.key : anchor > o.anchor; }
+  };
+  struct RuleState {
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;  ///< priority, sequence
+    std::vector<Id> pool;                                                 ///< random
+    std::vector<bool> pooled;
+    bool enabled = true;
+    std::int64_t rank = 0;  ///< higher first
+  };
+
+  void offer(std::size_t rule, Id anchor);
+  void process_changes();
+  void trace(const Rule& rule, int var, Id element, std::vector<Id>& anchors);
+  bool try_rule_queue(std::size_t rule, Application* applied);
+  bool try_random_tier(const std::vector<std::size_t>& tier, Application* applied);
+  void apply(std::size_t rule, Match& m, Application* applied);
+
+  Graph& g_;
+  std::vector<Rule> rules_;
+  Actions actions_;
+  Strategy strategy_;
+  Matcher matcher_;
+  std::vector<RuleState> state_;
+  std::vector<std::vector<std::size_t>> tiers_;  ///< rule indices, highest rank first
+  std::vector<Graph::Change> log_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t stamp_now_ = 0;
+  std::mt19937_64 rng_;
+  EngineCounters counters_;
+  std::map<std::string, std::size_t> applications_;
+};
+
+}  // namespace loom::engine

@@ -1,0 +1,70 @@
+#include "engine/rewriter.hpp"
+
+#include <fmt/format.h>
+
+#include "engine/rule_parser.hpp"
+
+namespace loom::engine {
+
+namespace {
+
+void merge_into(Graph& g, Match& m, Id from, Id into) {
+  if (from == into || from == no_element || into == no_element) return;
+  g.redirect_incoming(from, into);
+  g.remove(from);
+  for (Id& e : m.elements)
+    if (e == from) e = into;
+}
+
+}  // namespace
+
+void apply_rewrite(Graph& g, Match& m, const Actions& actions) {
+  const Rule& rule = *m.rule;
+  Matcher eval(g);
+  for (const RewriteOp& op : rule.rewrite) {
+    switch (op.kind) {
+      case RewriteOp::Kind::create: m.elements[op.var] = g.add(op.create_kind); break;
+      case RewriteOp::Kind::set_port: {
+        const PortSpec& p = g.schema().port(op.port);
+        std::int64_t raw = eval.evaluate(op.index, m);
+        unsigned slot = static_cast<unsigned>(p.order == PortOrder::cyclic ? ((raw % p.arity) + p.arity) % p.arity : raw);
+        if (slot >= p.arity)
+          throw RuleError(rule.file, op.pos, fmt::format("slot {} is out of range for port '{}'", raw, p.name));
+        g.link(m.elements[op.var], op.port, slot, static_cast<Id>(eval.evaluate(op.value, m)));
+        break;
+      }
+      case RewriteOp::Kind::set_attribute:
+        g.set(m.elements[op.var], op.attr, static_cast<std::int32_t>(eval.evaluate(op.value, m)));
+        break;
+      case RewriteOp::Kind::remove: g.remove(m.elements[op.var]); break;
+      case RewriteOp::Kind::merge:
+        merge_into(g, m, static_cast<Id>(eval.evaluate(op.value, m)), static_cast<Id>(eval.evaluate(op.other, m)));
+        break;
+      case RewriteOp::Kind::identify: {
+        Id a = static_cast<Id>(eval.evaluate(op.value, m)), b = static_cast<Id>(eval.evaluate(op.other, m));
+        if (a == b || a == no_element || b == no_element) break;
+        bool keep_a;
+        if (op.prefer && g.get(a, op.attr) != g.get(b, op.attr)) keep_a = g.get(a, op.attr) > g.get(b, op.attr);
+        else if (g.in_degree(a) != g.in_degree(b)) keep_a = g.in_degree(a) > g.in_degree(b);
+        else keep_a = a < b;
+        if (keep_a) merge_into(g, m, b, a);
+        else merge_into(g, m, a, b);
+        break;
+      }
+      case RewriteOp::Kind::call: {
+        std::vector<Id> args;
+        for (int v : op.args) args.push_back(m.elements[v]);
+        (*actions.find(op.action))(g, args);
+        break;
+      }
+    }
+  }
+}
+
+void check_actions(const Rule& rule, const Actions& actions) {
+  for (const RewriteOp& op : rule.rewrite)
+    if (op.kind == RewriteOp::Kind::call && !actions.find(op.action))
+      throw RuleError(rule.file, op.pos, fmt::format("expected a known action, found '{}'", op.action));
+}
+
+}  // namespace loom::engine

@@ -1,0 +1,41 @@
+#pragma once
+// Applying a rule's rewrite to a match: its operations run in the order the
+// rule file gives them (create, set ports and attributes, delete, merge,
+// identify, call a named action the domain registered).
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+
+#include "engine/graph.hpp"
+#include "engine/matcher.hpp"
+
+namespace loom::engine {
+
+/// A named action: domain code a rule may call for what is not local.
+using Action = std::function<void(Graph& graph, std::span<const Id> args)>;
+
+class Actions {
+public:
+  void add(const std::string& name, Action action) { actions_[name] = std::move(action); }
+  const Action* find(const std::string& name) const {
+    auto it = actions_.find(name);
+    return it == actions_.end() ? nullptr : &it->second;
+  }
+
+private:
+  std::map<std::string, Action> actions_;
+};
+
+/// Runs the rewrite of `m.rule` on `graph`. Afterwards `m.elements` holds the
+/// created elements, and variables whose element was merged away hold the
+/// element kept. `merge a into b` redirects every incidence to a onto b and
+/// removes a; `identify a, b` does the same keeping the element with the
+/// larger preferred attribute, else the one with more incoming incidences
+/// (so repeated identifications cost O(n log n) in all).
+void apply_rewrite(Graph& graph, Match& m, const Actions& actions);
+
+/// Throws RuleError if a rule calls an action that `actions` does not have.
+void check_actions(const Rule& rule, const Actions& actions);
+
+}  // namespace loom::engine

@@ -1,0 +1,432 @@
+// A recursive-descent parser for rule files. Statements need no separator
+// (each starts with a keyword or a name); `;` may be used and is ignored.
+#include "engine/rule_parser.hpp"
+
+#include <cctype>
+
+#include <fmt/format.h>
+
+namespace loom::engine {
+
+RuleError::RuleError(const std::string& f, ast::Pos p, const std::string& what)
+    : std::runtime_error(p.line > 0 ? fmt::format("{}:{}:{}: {}", f, p.line, p.column, what)
+                                    : fmt::format("{}: {}", f, what)),
+      file(f),
+      pos(p) {}
+
+namespace {
+
+using ast::Expr;
+using ast::Pos;
+
+struct Token {
+  enum class Kind { identifier, number, symbol, end } kind = Kind::end;
+  std::string text;
+  Pos pos;
+};
+
+std::string describe(const Token& t) {
+  switch (t.kind) {
+    case Token::Kind::end: return "end of file";
+    case Token::Kind::number: return "number " + t.text;
+    case Token::Kind::identifier: return "'" + t.text + "'";
+    case Token::Kind::symbol: return "'" + t.text + "'";
+  }
+  return t.text;
+}
+
+std::vector<Token> tokenize(const std::string& text, const std::string& file) {
+  std::vector<Token> out;
+  int line = 1, column = 1;
+  std::size_t i = 0;
+  auto advance = [&](std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k, ++i) {
+      if (text[i] == '\n') ++line, column = 1;
+      else ++column;
+    }
+  };
+  while (i < text.size()) {
+    char c = text[i];
+    if (c == '#') {
+      while (i < text.size() && text[i] != '\n') advance(1);
+      continue;
+    }
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      advance(1);
+      continue;
+    }
+    Token t;
+    t.pos = {line, column};
+    std::size_t start = i;
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_')) advance(1);
+      t.kind = Token::Kind::identifier;
+    } else if (std::isdigit(static_cast<unsigned char>(c))) {
+      while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) advance(1);
+      t.kind = Token::Kind::number;
+      if (i - start > 9) throw RuleError(file, t.pos, "number too large");
+    } else {
+      static const char* pairs[] = {"==", "!=", "<=", ">=", "->"};
+      t.kind = Token::Kind::symbol;
+      bool two = false;
+      for (const char* p : pairs)
+        if (text.compare(i, 2, p) == 0) two = true;
+      if (!two && std::string("{}()[],:;.=<>+-*").find(c) == std::string::npos)
+        throw RuleError(file, t.pos, fmt::format("unexpected character '{}'", c));
+      advance(two ? 2 : 1);
+    }
+    t.text = text.substr(start, i - start);
+    out.push_back(std::move(t));
+  }
+  out.push_back(Token{Token::Kind::end, "", {line, column}});
+  return out;
+}
+
+class Parser {
+public:
+  Parser(std::vector<Token> tokens, std::string file) : tokens_(std::move(tokens)), file_(std::move(file)) {}
+
+  std::vector<ast::Rule> rules() {
+    std::vector<ast::Rule> out;
+    while (peek().kind != Token::Kind::end) {
+      expect_word("rule");
+      out.push_back(rule());
+    }
+    if (out.empty()) fail(peek(), "expected 'rule'");
+    return out;
+  }
+
+private:
+  const Token& peek(std::size_t ahead = 0) const { return tokens_[std::min(pos_ + ahead, tokens_.size() - 1)]; }
+  Token next() { return tokens_[pos_ < tokens_.size() - 1 ? pos_++ : pos_]; }
+  bool is(const char* text, std::size_t ahead = 0) const {
+    const Token& t = peek(ahead);
+    return t.kind != Token::Kind::end && t.kind != Token::Kind::number && t.text == text;
+  }
+  bool accept(const char* text) {
+    if (!is(text)) return false;
+    next();
+    return true;
+  }
+  [[noreturn]] void fail(const Token& t, const std::string& expected) const {
+    throw RuleError(file_, t.pos, fmt::format("{}, found {}", expected, describe(t)));
+  }
+  void expect(const char* symbol) {
+    if (!accept(symbol)) fail(peek(), fmt::format("expected '{}'", symbol));
+  }
+  void expect_word(const char* word) {
+    if (!accept(word)) fail(peek(), fmt::format("expected '{}'", word));
+  }
+  std::string name(const char* what = "a name") {
+    if (peek().kind != Token::Kind::identifier || peek().text == "_") fail(peek(), fmt::format("expected {}", what));
+    return next().text;
+  }
+  std::int64_t integer() {
+    bool negative = accept("-");
+    if (peek().kind != Token::Kind::number) fail(peek(), "expected a number");
+    std::int64_t v = std::stoll(next().text);
+    return negative ? -v : v;
+  }
+
+  ast::Rule rule() {
+    ast::Rule r;
+    r.pos = peek().pos;
+    r.file = file_;
+    r.name = name("a rule name");
+    expect("{");
+    bool seen_match = false;
+    while (!accept("}")) {
+      const Token& t = peek();
+      if (accept("priority")) r.priority = integer();
+      else if (accept("order")) r.order = expr();
+      else if (accept("anchor")) r.anchor = name("an anchor variable");
+      else if (accept("match")) {
+        expect("{");
+        r.pattern = pattern();
+        seen_match = true;
+      } else if (accept("rewrite")) {
+        expect("{");
+        while (!accept("}")) statement(r.rewrite);
+      } else if (!accept(";")) {
+        fail(t, "expected 'priority', 'order', 'anchor', 'match', 'rewrite' or '}'");
+      }
+    }
+    if (!seen_match) fail(previous(), fmt::format("rule '{}' has no 'match' block; expected 'match'", r.name));
+    return r;
+  }
+  const Token& previous() const { return tokens_[pos_ > 0 ? pos_ - 1 : 0]; }
+
+  ast::Pattern pattern() {
+    ast::Pattern p;
+    p.pos = peek().pos;
+    while (!accept("}")) {
+      const Token& t = peek();
+      if (accept(";")) continue;
+      if (accept("not")) {
+        expect("{");
+        p.negatives.push_back(pattern());
+      } else if (accept("if")) {
+        p.conditions.push_back(expr());
+      } else if (accept("count")) {
+        p.counts.push_back(count(t.pos));
+      } else if (accept("hom")) {
+        expect("(");
+        std::vector<std::string> names{name()};
+        while (accept(",")) names.push_back(name());
+        expect(")");
+        p.may_be_equal.push_back(std::move(names));
+      } else if (t.kind == Token::Kind::identifier && (is(",", 1) || is(":", 1))) {
+        ast::Declaration d;
+        d.pos = t.pos;
+        d.names.push_back(name());
+        while (accept(",")) d.names.push_back(name());
+        expect(":");
+        d.kind = name("a kind");
+        if (accept("where")) d.where = expr();
+        p.declarations.push_back(std::move(d));
+      } else if (t.kind == Token::Kind::identifier && is(".", 1)) {
+        ast::Incidence inc;
+        inc.pos = t.pos;
+        inc.owner = name();
+        expect(".");
+        inc.port = name("a port");
+        if (accept("[")) {
+          inc.index = index(true);
+          inc.indexed = true;
+          expect("]");
+        }
+        expect("==");
+        if (!accept("none")) inc.target = name("a variable or 'none'");
+        p.incidences.push_back(std::move(inc));
+      } else {
+        fail(t, "expected a declaration 'x: kind', an incidence 'x.port[i] == y', 'if', 'count', 'hom', 'not' or '}'");
+      }
+    }
+    return p;
+  }
+
+  ast::Count count(Pos pos) {
+    ast::Count c;
+    c.pos = pos;
+    expect("(");
+    c.kind = name("a kind");
+    expect(".");
+    c.port = name("a port");
+    expect("->");
+    c.target = name("a variable");
+    if (accept("where")) c.where = expr();
+    expect(")");
+    const Token& t = peek();
+    static const std::pair<const char*, Expr::Op> ops[] = {{"==", Expr::Op::eq}, {"!=", Expr::Op::ne}, {"<=", Expr::Op::le},
+                                                          {">=", Expr::Op::ge}, {"<", Expr::Op::lt},  {">", Expr::Op::gt}};
+    bool found = false;
+    for (auto& [text, op] : ops)
+      if (!found && accept(text)) c.comparison = op, found = true;
+    if (!found) fail(t, "expected a comparison after count(...)");
+    c.bound = integer();
+    return c;
+  }
+
+  ast::Index index(bool allow_any) {
+    ast::Index ix;
+    if (peek().kind == Token::Kind::number || is("-")) {
+      ix.offset = static_cast<int>(integer());
+      return ix;
+    }
+    if (accept("_")) {
+      if (!allow_any) fail(previous(), "expected an index ('_' is only allowed in a match)");
+      ix.kind = ast::Index::Kind::any;
+      return ix;
+    }
+    ix.kind = ast::Index::Kind::variable;
+    ix.variable = name("an index");
+    if (accept("+")) ix.offset = static_cast<int>(integer());
+    else if (accept("-")) ix.offset = -static_cast<int>(integer());
+    return ix;
+  }
+
+  void statement(std::vector<ast::Statement>& out) {
+    ast::Statement s;
+    const Token& t = peek();
+    s.pos = t.pos;
+    if (accept(";")) return;
+    if (accept("new")) {
+      s.op = ast::Statement::Op::create;
+      s.names.push_back(name());
+      while (accept(",")) s.names.push_back(name());
+      expect(":");
+      s.kind = name("a kind");
+    } else if (accept("delete")) {
+      s.op = ast::Statement::Op::remove;
+      s.names.push_back(name());
+    } else if (accept("merge")) {
+      s.op = ast::Statement::Op::merge;
+      s.values.push_back(primary());
+      expect_word("into");
+      s.values.push_back(primary());
+    } else if (accept("identify")) {
+      s.op = ast::Statement::Op::identify;
+      s.values.push_back(primary());
+      expect(",");
+      s.values.push_back(primary());
+      if (accept("prefer")) s.kind = name("an attribute");
+    } else if (accept("call")) {
+      s.op = ast::Statement::Op::call;
+      s.kind = name("an action name");
+      expect("(");
+      if (!accept(")")) {
+        s.names.push_back(name());
+        while (accept(",")) s.names.push_back(name());
+        expect(")");
+      }
+    } else if (t.kind == Token::Kind::identifier && is(".", 1)) {
+      s.target = name();
+      expect(".");
+      s.member = name("a port or attribute");
+      bool indexed = false;
+      if (accept("[")) {
+        s.index = index(false);
+        expect("]");
+        indexed = true;
+      }
+      expect("=");
+      if (!indexed && accept("[")) {
+        s.op = ast::Statement::Op::set_port_list;
+        s.values.push_back(expr());
+        while (accept(",")) s.values.push_back(expr());
+        expect("]");
+      } else {
+        s.op = indexed ? ast::Statement::Op::set_port : ast::Statement::Op::set_attribute;
+        s.values.push_back(expr());
+      }
+    } else {
+      fail(t, "expected 'new', 'delete', 'merge', 'identify', 'call', 'x.member = ...' or '}'");
+    }
+    out.push_back(std::move(s));
+  }
+
+  // --- expressions, loosest first ---------------------------------------
+  Expr expr() { return disjunction(); }
+  Expr binary(Expr::Op op, Expr a, Expr b, Pos pos) {
+    Expr e;
+    e.op = op;
+    e.pos = pos;
+    e.args.push_back(std::move(a));
+    e.args.push_back(std::move(b));
+    return e;
+  }
+  Expr disjunction() {
+    Expr e = conjunction();
+    while (is("or")) {
+      Pos p = next().pos;
+      e = binary(Expr::Op::either, std::move(e), conjunction(), p);
+    }
+    return e;
+  }
+  Expr conjunction() {
+    Expr e = negation();
+    while (is("and")) {
+      Pos p = next().pos;
+      e = binary(Expr::Op::both, std::move(e), negation(), p);
+    }
+    return e;
+  }
+  Expr negation() {
+    if (is("not") && !is("{", 1)) {
+      Expr e;
+      e.pos = next().pos;
+      e.op = Expr::Op::negate;
+      e.args.push_back(negation());
+      return e;
+    }
+    return comparison();
+  }
+  Expr comparison() {
+    Expr e = additive();
+    static const std::pair<const char*, Expr::Op> ops[] = {{"==", Expr::Op::eq}, {"!=", Expr::Op::ne}, {"<=", Expr::Op::le},
+                                                          {">=", Expr::Op::ge}, {"<", Expr::Op::lt},  {">", Expr::Op::gt}};
+    for (auto& [text, op] : ops)
+      if (is(text)) {
+        Pos p = next().pos;
+        return binary(op, std::move(e), additive(), p);
+      }
+    return e;
+  }
+  Expr additive() {
+    Expr e = multiplicative();
+    while (is("+") || is("-")) {
+      Token t = next();
+      e = binary(t.text == "+" ? Expr::Op::add : Expr::Op::sub, std::move(e), multiplicative(), t.pos);
+    }
+    return e;
+  }
+  Expr multiplicative() {
+    Expr e = unary();
+    while (is("*")) {
+      Pos p = next().pos;
+      e = binary(Expr::Op::mul, std::move(e), unary(), p);
+    }
+    return e;
+  }
+  Expr unary() {
+    if (is("-")) {
+      Expr e;
+      e.pos = next().pos;
+      e.op = Expr::Op::neg;
+      e.args.push_back(unary());
+      return e;
+    }
+    return primary();
+  }
+  Expr primary() {
+    Expr e;
+    const Token& t = peek();
+    e.pos = t.pos;
+    if (t.kind == Token::Kind::number) {
+      e.value = std::stoll(next().text);
+      return e;
+    }
+    if (accept("(")) {
+      e = expr();
+      expect(")");
+      return e;
+    }
+    if (accept("none")) {
+      e.op = Expr::Op::none;
+      return e;
+    }
+    if ((is("max") || is("min")) && is("(", 1)) {
+      e.op = next().text == "max" ? Expr::Op::max : Expr::Op::min;
+      expect("(");
+      e.args.push_back(expr());
+      while (accept(",")) e.args.push_back(expr());
+      expect(")");
+      return e;
+    }
+    if (t.kind != Token::Kind::identifier) fail(t, "expected a number, a name, 'none', 'max(...)', 'min(...)' or '('");
+    e.op = Expr::Op::name;
+    e.name = name();
+    if (accept(".")) {
+      e.op = Expr::Op::attribute;
+      e.member = name("a port or attribute");
+      if (accept("[")) {
+        e.op = Expr::Op::port;
+        e.index = index(false);
+        expect("]");
+      }
+    }
+    return e;
+  }
+
+  std::vector<Token> tokens_;
+  std::string file_;
+  std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+std::vector<ast::Rule> parse_rules(const std::string& text, const std::string& file) {
+  return Parser(tokenize(text, file), file).rules();
+}
+
+}  // namespace loom::engine

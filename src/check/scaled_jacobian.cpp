@@ -1,0 +1,62 @@
+// Criterion 7 and the scaled Jacobian itself (Verdict's corner form).
+#include <cfloat>
+#include <cmath>
+
+#include "src/check/criteria.hpp"
+
+namespace loom {
+
+namespace {
+/// For each corner, the three neighbours whose edges span it (Verdict's triples,
+/// VTK order); det[e1,e2,e3] > 0 at every corner of a positively oriented hex.
+constexpr std::array<std::array<int, 3>, 8> kCornerEdges{
+    {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}}};
+}  // namespace
+
+double scaled_jacobian(const HexMesh& mesh, std::size_t hex) {
+  const Hex& nodes = mesh.hexes[hex];
+  for (std::uint32_t v : nodes)
+    if (v >= mesh.points.size()) return -1.0;
+  double worst = 1.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3& p = mesh.points[nodes[corner]];
+    const auto& n = kCornerEdges[corner];
+    const Vec3 e1 = mesh.points[nodes[n[0]]] - p, e2 = mesh.points[nodes[n[1]]] - p, e3 = mesh.points[nodes[n[2]]] - p;
+    const double l1 = dot(e1, e1), l2 = dot(e2, e2), l3 = dot(e3, e3);
+    if (!(l1 > DBL_MIN && l2 > DBL_MIN && l3 > DBL_MIN)) return -1.0;  // zero-length or non-finite edge
+    const double value = dot(e1, cross(e2, e3)) / std::sqrt(l1 * l2 * l3);
+    if (!std::isfinite(value)) return -1.0;
+    worst = std::min(worst, value);
+  }
+  return worst;
+}
+
+namespace criteria {
+
+CriterionResult positive_scaled_jacobian(const HexMesh& mesh, QualitySummary& quality) {
+  quality = {};
+  if (mesh.hexes.empty()) return failed(7, "the mesh has no hexes");
+  double sum = 0;
+  std::size_t first_bad = mesh.hexes.size();
+  double first_bad_value = 0;
+  quality.min_scaled_jacobian = 1.0;
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+    const double sj = scaled_jacobian(mesh, h);
+    sum += sj;
+    quality.min_scaled_jacobian = std::min(quality.min_scaled_jacobian, sj);
+    if (sj < 0.2) ++quality.below_0_2;
+    if (sj <= 0) {
+      if (quality.below_zero++ == 0) {
+        first_bad = h;
+        first_bad_value = sj;
+      }
+    }
+  }
+  quality.mean_scaled_jacobian = sum / static_cast<double>(mesh.hexes.size());
+  if (quality.below_zero == 0) return passed(7);
+  return failed(7, fmt::format("hex {} has scaled Jacobian {:.3f} ({} hex{} at or below 0)", first_bad, first_bad_value,
+                               quality.below_zero, quality.below_zero == 1 ? "" : "es"));
+}
+
+}  // namespace criteria
+}  // namespace loom

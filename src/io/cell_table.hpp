@@ -1,0 +1,35 @@
+#pragma once
+// What the writers see: points and one block of same-shaped cells, with the
+// per-format type codes. Numbers are written in the shortest form that reads
+// back to the same double, so every write round-trips exactly and is
+// deterministic.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "src/mesh/hex_mesh.hpp"
+#include "src/mesh/quad_surface.hpp"
+
+namespace loom {
+
+enum class CellShape { quad, hexahedron };
+
+struct CellTable {
+  const std::vector<Vec3>& points;
+  CellShape shape;
+  std::vector<std::uint32_t> connectivity;  ///< cell_count() * nodes_per_cell(), 0-based
+
+  std::size_t nodes_per_cell() const { return shape == CellShape::quad ? 4 : 8; }
+  std::size_t cell_count() const { return connectivity.size() / nodes_per_cell(); }
+  int dimension() const { return shape == CellShape::quad ? 2 : 3; }
+  int vtk_type() const { return shape == CellShape::quad ? 9 : 12; }  // VTK_QUAD, VTK_HEXAHEDRON
+  int msh_type() const { return shape == CellShape::quad ? 3 : 5; }   // MSH 4-node quad, 8-node hex
+};
+
+CellTable cell_table(const QuadSurface& surface);
+CellTable cell_table(const HexMesh& mesh);
+
+/// Shortest decimal text that parses back to exactly `x`.
+std::string format_real(double x);
+
+}  // namespace loom

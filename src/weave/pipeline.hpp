@@ -1,0 +1,32 @@
+#pragma once
+// Surface in, hex mesh out: initial STC, weave, primal construction, node
+// placement, validity check. The one entry point `loom weave` and the tests use.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/check/validity.hpp"
+#include "src/mesh/hex_mesh.hpp"
+#include "src/mesh/quad_surface.hpp"
+#include "src/stc/stc.hpp"
+#include "src/weave/smoothing.hpp"
+#include "src/weave/weave.hpp"
+
+namespace loom::weave {
+
+struct MeshingResult {
+  stc::Stc stc;                          ///< the weave's final state
+  WeaveResult weave;
+  std::optional<HexMesh> mesh;           ///< when the weave closed and dualized
+  std::optional<ValidityReport> check;   ///< of `mesh`, against the surface
+  SmoothingReport smoothing;
+  std::string failure;                   ///< why there is no mesh, when the weave closed
+  double seconds = 0;
+  /// The mesh is written: closed and criteria 1-6 hold (geometry may still be bad).
+  bool combinatorially_valid() const { return mesh && check && check->combinatorial_valid(); }
+};
+
+/// Weaves a validated, outward-oriented surface with `rules`.
+MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const WeaveOptions& options);
+
+}  // namespace loom::weave

@@ -1,0 +1,58 @@
+#include "src/weave/step_dump.hpp"
+
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "engine/dot.hpp"
+#include "src/stc/sheet_diagram.hpp"
+#include "src/util/atomic_file.hpp"
+#include "src/util/error.hpp"
+
+namespace loom::weave {
+
+StepDumper::StepDumper(std::filesystem::path dir, bool svg) : dir_(std::move(dir)), svg_(svg) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir_, ec);
+  if (ec) fail_input(dir_.string(), "cannot create the DOT directory (" + ec.message() + ")", "choose another --dot DIR");
+}
+
+void StepDumper::emit(const std::string& stem, const std::string& dot) {
+  write_text_atomically(dir_ / (stem + ".dot"), dot);
+  ++files_;
+  if (svg_) {
+    write_text_atomically(dir_ / (stem + ".svg"), engine::render_svg(dot));
+    ++files_;
+  }
+}
+
+void StepDumper::dump(const engine::Application& step, const stc::Stc& stc) {
+  const engine::Graph& g = stc.graph();
+  const auto& ids = stc.ids();
+  engine::DotStyle style;
+  style.graph_name = fmt::format("step {}: {}", step.step, step.rule->name);
+  std::set<engine::Id> touched;
+  for (const engine::Match* m : {&step.matched, &step.result})
+    for (engine::Id e : m->elements)
+      if (e != engine::no_element && g.alive(e)) touched.insert(e);
+  std::set<engine::Id> sheets;
+  for (engine::Id e : touched) {
+    style.highlight.insert(e);
+    style.only.insert(e);
+    if (g.kind(e) == ids.edge) sheets.insert(stc.edge_sheet(e));
+    // Neighbours drawn for context, but not the sheets and chords (they reach far).
+    for (engine::SlotId s = g.first_slot(e), end = s + g.slot_count(e); s < end; ++s)
+      if (engine::Id t = g.slot_target(s); t != engine::no_element && g.kind(t) != ids.sheet && g.kind(t) != ids.chord)
+        style.only.insert(t);
+  }
+  std::ostringstream dot;
+  engine::write_dot(dot, g, style);
+  std::string stem = fmt::format("step-{:04}-{}", step.step, step.rule->name);
+  emit(stem, dot.str());
+  for (engine::Id sheet : sheets)
+    if (sheet != engine::no_element && g.alive(sheet))
+      emit(fmt::format("step-{:04}-sheet-{}", step.step, sheet), stc::sheet_diagram_dot(stc, sheet));
+}
+
+}  // namespace loom::weave

@@ -1,0 +1,27 @@
+#pragma once
+// Pictures of a weave, step by step (`loom weave --dot-steps`): for every rule
+// application, the matched elements and their neighbours with the match
+// highlighted, and the diagram of every sheet the step touched.
+#include <filesystem>
+
+#include "engine/engine.hpp"
+#include "src/stc/stc.hpp"
+
+namespace loom::weave {
+
+class StepDumper {
+public:
+  /// Writes into `dir` (created if needed); SVG too when `svg`.
+  StepDumper(std::filesystem::path dir, bool svg);
+  /// step-NNNN-RULE.dot and step-NNNN-sheet-S.dot (S: the sheet's element id).
+  void dump(const engine::Application& step, const stc::Stc& stc);
+  std::size_t files_written() const { return files_; }
+
+private:
+  void emit(const std::string& stem, const std::string& dot);
+  std::filesystem::path dir_;
+  bool svg_;
+  std::size_t files_ = 0;
+};
+
+}  // namespace loom::weave

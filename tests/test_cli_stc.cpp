@@ -1,0 +1,125 @@
+// `loom stc` end to end, `--dot` output, and the one-line, exit-2 contract for
+// every bad input under tests/data/bad.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support.hpp"
+
+using loom::test::run_cli;
+using loom::test::ScratchDir;
+namespace fs = std::filesystem;
+
+namespace {
+nlohmann::json stc_json(const fs::path& mesh) {
+  auto r = run_cli("stc " + mesh.string() + " --json");
+  REQUIRE_MESSAGE(r.status == 0, r.err);
+  return nlohmann::json::parse(r.out);
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+}  // namespace
+
+TEST_CASE("loom stc reports hexes, sheets and chords of a hex grid") {
+  ScratchDir dir("stc");
+  REQUIRE(run_cli("gen hexgrid 3 4 5 -o " + (dir / "grid.vtk").string()).status == 0);
+  auto j = stc_json(dir / "grid.vtk");
+  CHECK(j["hexes"] == 60);
+  CHECK(j["sheets"] == 12);
+  CHECK(j["chords"] == 47);
+  CHECK(j["self_intersecting_sheets"] == 0);
+  auto text = run_cli("stc " + (dir / "grid.vtk").string());
+  CHECK(text.out.find("60 hexes") != std::string::npos);
+  CHECK(text.out.find("12 sheets, 47 chords") != std::string::npos);
+}
+
+TEST_CASE("loom stc reports the loops of a surface") {
+  ScratchDir dir("stc");
+  SUBCASE("box 3 4 5: twelve loops") {
+    REQUIRE(run_cli("gen box 3 4 5 -o " + (dir / "box.obj").string()).status == 0);
+    auto j = stc_json(dir / "box.obj");
+    CHECK(j["loops"] == 12);
+    CHECK(j["chords"] == 94);
+    CHECK(j["self_intersecting_sheets"] == 0);
+  }
+  SUBCASE("Schneiders' pyramid: two loops, one crossing itself in 8 quads") {
+    REQUIRE(run_cli("gen schneiders -o " + (dir / "pyr.off").string()).status == 0);
+    auto j = stc_json(dir / "pyr.off");
+    CHECK(j["loops"] == 2);
+    CHECK(j["self_intersecting_sheets"] == 1);
+    int crossing = 0;
+    for (auto& sh : j["sheet_list"])
+      if (sh["self_intersecting"] == true) crossing = sh["self_crossing_quads"];
+    CHECK(crossing == 8);
+    auto text = run_cli("stc " + (dir / "pyr.off").string());
+    CHECK(text.out.find("crosses itself in 8 quads") != std::string::npos);
+  }
+}
+
+TEST_CASE("loom stc --dot writes DOT that Graphviz accepts, the same on every run") {
+  ScratchDir dir("dot");
+  REQUIRE(run_cli("gen hexgrid 2 2 3 -o " + (dir / "grid.msh").string()).status == 0);
+  REQUIRE(run_cli("gen schneiders -o " + (dir / "pyr.obj").string()).status == 0);
+  for (std::string mesh : {"grid.msh", "pyr.obj"}) {
+    auto out1 = dir / (mesh + ".dot1"), out2 = dir / (mesh + ".dot2");
+    REQUIRE(run_cli("stc " + (dir / mesh).string() + " --dot " + out1.string()).status == 0);
+    REQUIRE(run_cli("stc " + (dir / mesh).string() + " --dot " + out2.string()).status == 0);
+    int dots = 0;
+    for (auto& entry : fs::directory_iterator(out1)) {
+      if (entry.path().extension() != ".dot") continue;
+      ++dots;
+      std::string cmd = "dot -Tsvg " + entry.path().string() + " -o /dev/null 2>/dev/null";
+      CHECK_MESSAGE(std::system(cmd.c_str()) == 0, entry.path());
+      CHECK(slurp(entry.path()) == slurp(out2 / entry.path().filename()));
+      auto svg = entry.path();
+      svg.replace_extension(".svg");
+      CHECK(slurp(svg).find("<svg") != std::string::npos);
+    }
+    CHECK(dots >= 3);  // stc.dot and at least two sheets
+    CHECK(fs::exists(out1 / "sheet-0.dot"));
+  }
+}
+
+TEST_CASE("every bad input: exit 2, one clear line, nothing written") {
+  std::ifstream manifest(loom::test::data("bad/expected.tsv"));
+  REQUIRE(manifest);
+  std::string line;
+  int cases = 0;
+  while (std::getline(manifest, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    auto tab = line.find('\t');
+    REQUIRE(tab != std::string::npos);
+    std::string file = line.substr(0, tab), expected = line.substr(tab + 1);
+    ScratchDir out("bad");
+    auto r = run_cli("stc " + loom::test::data("bad/" + file).string() + " --dot " + (out / "dot").string());
+    CAPTURE(file);
+    CAPTURE(r.err);
+    CHECK(r.status == 2);
+    CHECK(loom::test::count_lines(r.err) == 1);
+    CHECK(r.err.find(expected) != std::string::npos);
+    CHECK(r.err.rfind("loom: error: ", 0) == 0);
+    CHECK_FALSE(fs::exists(out / "dot"));
+    ++cases;
+  }
+  CHECK(cases >= 15);
+}
+
+TEST_CASE("bad usage: exit 2 and one line") {
+  for (std::string args : {"", "stc", "frobnicate", "stc --bogus x.obj", "stc /no/such/file.obj",
+                           "gen box 0 1 1 -o /tmp/never.obj", "gen nosuchkind -o /tmp/never.obj"}) {
+    auto r = run_cli(args);
+    CAPTURE(args);
+    CAPTURE(r.err);
+    CHECK(r.status == 2);
+    CHECK(loom::test::count_lines(r.err) == 1);
+  }
+  CHECK_FALSE(fs::exists("/tmp/never.obj"));
+}
