@@ -134,7 +134,8 @@ void Engine::apply(std::size_t r, Match& m, Application* applied) {
   }
   g_.set_change_log(nullptr);
   if (applied) applied->result = m;
-  process_changes();
+  if (full_rescan_) rescan();
+  else process_changes();
 }
 
 void Engine::trace(const Rule& rule, int var, Id element, std::vector<Id>& anchors) {

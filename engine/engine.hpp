@@ -53,6 +53,9 @@ public:
   const std::map<std::string, std::size_t>& applications() const { return applications_; }
   /// Makes every element a candidate again (after the graph changed outside the engine).
   void rescan();
+  /// The reference mode the tests compare the incremental one with: after
+  /// every step, every element is a candidate again.
+  void set_full_rescan(bool on) { full_rescan_ = on; }
 
 private:
   struct Entry {
@@ -86,6 +89,7 @@ private:
   std::vector<std::uint32_t> stamp_;
   std::uint32_t stamp_now_ = 0;
   std::mt19937_64 rng_;
+  bool full_rescan_ = false;
   EngineCounters counters_;
   std::map<std::string, std::size_t> applications_;
 };

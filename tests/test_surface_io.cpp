@@ -152,8 +152,8 @@ TEST_CASE("good surfaces in tests/data/good read with the expected sizes") {
 
 TEST_CASE("all cube files describe the same cube") {
   const QuadSurface reference = read_surface(test::data("good/cube.obj"));
-  for (std::string file : {"cube.off", "cube.vtk", "cube-binary.vtk", "cube-polydata.vtk", "cube.vtu",
-                           "cube-msh22.msh", "cube-msh41.msh", "cube-msh22-binary.msh", "cube-msh41-binary.msh"}) {
+  for (std::string file : {"cube.off", "cube.vtk", "cube-binary.vtk", "cube-polydata.vtk", "cube.vtu", "cube-msh22.msh",
+                           "cube-msh41.msh", "cube-msh22-binary.msh", "cube-msh41-binary.msh"}) {
     CAPTURE(file);
     check_same(read_surface(test::data("good/" + file)), reference);
   }

@@ -193,8 +193,9 @@ TEST_CASE("each rejection names the problem and the element") {
     s.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {0.5, 0.5, 1}};
     s.quads = {{0, 2, 3, 1}, {0, 1, 5, 4}, {1, 3, 7, 5}, {3, 2, 6, 7}, {2, 0, 4, 6}, {4, 5, 7, 8}, {4, 8, 7, 6}};
     std::string message = rejection(s);
-    CHECK(contains(message, "7 quads, an odd number: no hex mesh can exist: each chord uses two boundary quads; an "
-                            "odd count can never bound a hex mesh"));
+    CHECK(contains(message,
+                   "7 quads, an odd number: no hex mesh can exist: each chord uses two boundary quads; an "
+                   "odd count can never bound a hex mesh"));
     CHECK(contains(message, "subdivid"));
   }
 }

@@ -1,7 +1,5 @@
 #include "src/io/cell_table.hpp"
 
-#include <fmt/format.h>
-
 namespace loom {
 
 namespace {
@@ -14,13 +12,8 @@ std::vector<std::uint32_t> flatten(const std::vector<std::array<std::uint32_t, N
 }
 }  // namespace
 
-CellTable cell_table(const QuadSurface& surface) {
-  return {surface.points, CellShape::quad, flatten(surface.quads)};
-}
+CellTable cell_table(const QuadSurface& surface) { return {surface.points, CellShape::quad, flatten(surface.quads)}; }
 
 CellTable cell_table(const HexMesh& mesh) { return {mesh.points, CellShape::hexahedron, flatten(mesh.hexes)}; }
-
-// fmt's default floating-point presentation is the shortest round-trip form.
-std::string format_real(double x) { return fmt::format("{}", x); }
 
 }  // namespace loom

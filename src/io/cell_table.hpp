@@ -1,10 +1,9 @@
 #pragma once
 // What the writers see: points and one block of same-shaped cells, with the
-// per-format type codes. Numbers are written in the shortest form that reads
-// back to the same double, so every write round-trips exactly and is
-// deterministic.
+// per-format type codes. Writers print doubles with fmt's default "{}", the
+// shortest text that reads back to the same double, so every write round-trips
+// exactly and is deterministic.
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "src/mesh/hex_mesh.hpp"
@@ -28,8 +27,5 @@ struct CellTable {
 
 CellTable cell_table(const QuadSurface& surface);
 CellTable cell_table(const HexMesh& mesh);
-
-/// Shortest decimal text that parses back to exactly `x`.
-std::string format_real(double x);
 
 }  // namespace loom

@@ -1,5 +1,10 @@
 #include "src/io/gmsh_session.hpp"
 
+#include <fcntl.h>
+#include <gmsh.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
@@ -7,12 +12,6 @@
 #include <cstring>
 #include <exception>
 #include <vector>
-
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <gmsh.h>
 
 #include "src/io/text_scanner.hpp"
 #include "src/util/error.hpp"
@@ -112,15 +111,19 @@ std::string run_gmsh_isolated(const std::string& where, const std::string& hint,
   while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
   if (WIFSIGNALED(status))
-    fail_input(where, fmt::format("Gmsh crashed while reading the file (signal {}); it is probably malformed",
-                                  WTERMSIG(status)),
-               hint);
+    fail_input(
+        where,
+        fmt::format("Gmsh crashed while reading the file (signal {}); it is probably malformed", WTERMSIG(status)),
+        hint);
   if (outcome.empty()) fail_input(where, "Gmsh stopped without a result", hint);
   std::string payload = outcome.substr(1);
   switch (outcome.front()) {
-    case result_ok: return payload;
-    case result_input_error: throw InputError(payload);
-    default: fail_input(where, "Gmsh: " + one_line(payload), hint);
+    case result_ok:
+      return payload;
+    case result_input_error:
+      throw InputError(payload);
+    default:
+      fail_input(where, "Gmsh: " + one_line(payload), hint);
   }
 }
 

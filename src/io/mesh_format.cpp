@@ -48,11 +48,16 @@ MeshFormat hex_format_of(const std::filesystem::path& file) {
 
 std::string_view format_name(MeshFormat format) {
   switch (format) {
-    case MeshFormat::obj: return "OBJ";
-    case MeshFormat::off: return "OFF";
-    case MeshFormat::vtk: return "legacy VTK";
-    case MeshFormat::vtu: return "VTU";
-    case MeshFormat::msh: return "MSH";
+    case MeshFormat::obj:
+      return "OBJ";
+    case MeshFormat::off:
+      return "OFF";
+    case MeshFormat::vtk:
+      return "legacy VTK";
+    case MeshFormat::vtu:
+      return "VTU";
+    case MeshFormat::msh:
+      return "MSH";
   }
   return "?";
 }

@@ -2,9 +2,9 @@
 // element naming an undefined node, or a corrupt count, crashes it (found by
 // fuzzing; see docs/formats.md). This one checks every count and reference and
 // names the line. Sections other than $Nodes and $Elements are skipped.
-#include <unordered_map>
-
 #include <fmt/format.h>
+
+#include <unordered_map>
 
 #include "src/io/formats.hpp"
 #include "src/io/msh_element_types.hpp"
@@ -16,7 +16,7 @@ namespace loom {
 namespace {
 
 class MshAsciiParser {
-public:
+ public:
   MshAsciiParser(std::string_view text, const std::string& where) : in_(text, where) {}
 
   RawMesh parse() {
@@ -42,13 +42,14 @@ public:
     return std::move(mesh_);
   }
 
-private:
+ private:
   void read_header() {
     if (in_.expect_token("$MeshFormat") != "$MeshFormat")
       fail_input(in_.where(), "line 1 is not $MeshFormat", "this is not a Gmsh MSH file; check the extension");
     std::string_view version = in_.expect_token("the MSH version");
     if (version != "2.2" && version != "4.1")
-      in_.fail(fmt::format("MSH version {} is not supported", quote_token(version)), "export the mesh as MSH 4.1 or 2.2");
+      in_.fail(fmt::format("MSH version {} is not supported", quote_token(version)),
+               "export the mesh as MSH 4.1 or 2.2");
     version_ = version == "2.2" ? 2 : 4;
     in_.integer("the MSH file type");
     in_.integer("the MSH data size");
@@ -63,7 +64,7 @@ private:
   void skip_section(std::string_view name) {
     const std::string end = fmt::format("$End{}", name);
     for (std::string_view t = in_.token(); t != end; t = in_.token())
-      if (t.empty()) in_.fail_truncated(end);
+      if (t.empty()) in_.fail_truncated(quote_token(end));
   }
 
   std::int64_t tag(std::string_view what) {

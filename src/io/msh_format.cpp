@@ -2,9 +2,9 @@
 // Gmsh in a child process. Writing is our own MSH 4.1 ASCII: Gmsh 4.8 writes
 // coordinates with %.16g, which does not round-trip every double (see
 // docs/formats.md).
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "src/io/formats.hpp"
 #include "src/io/text_scanner.hpp"

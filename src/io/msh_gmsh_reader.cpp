@@ -1,11 +1,11 @@
 // Reads an MSH file through the Gmsh API, in an isolated child process (see
 // gmsh_session.hpp). Used for binary MSH, which our ASCII parser does not read.
+#include <fmt/format.h>
+#include <gmsh.h>
+
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
-
-#include <fmt/format.h>
-#include <gmsh.h>
 
 #include "src/io/formats.hpp"
 #include "src/io/gmsh_session.hpp"
@@ -19,7 +19,7 @@ namespace {
 // The child hands the mesh back as bytes: plain values in native byte order
 // (parent and child are the same program on the same machine).
 class ByteWriter {
-public:
+ public:
   template <class T>
   void put(const T& value) {
     bytes_.append(reinterpret_cast<const char*>(&value), sizeof value);
@@ -30,12 +30,12 @@ public:
   }
   std::string take() { return std::move(bytes_); }
 
-private:
+ private:
   std::string bytes_;
 };
 
 class ByteReader {
-public:
+ public:
   explicit ByteReader(std::string_view bytes) : bytes_(bytes) {}
   template <class T>
   T get() {
@@ -53,7 +53,7 @@ public:
     return s;
   }
 
-private:
+ private:
   std::string_view bytes_;
   std::size_t pos_ = 0;
 };
@@ -99,7 +99,8 @@ RawMesh mesh_from_gmsh_model(const std::string& where) {
     Vec3 p{coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]};
     for (double x : p)
       if (!std::isfinite(x))
-        fail_input(where, fmt::format("node {} has a{} coordinate", node_tags[i], std::isnan(x) ? " NaN" : "n infinite"),
+        fail_input(where,
+                   fmt::format("node {} has a{} coordinate", node_tags[i], std::isnan(x) ? " NaN" : "n infinite"),
                    "every coordinate must be a finite number; fix or remove that node");
     if (!index_of_tag.emplace(node_tags[i], static_cast<std::int64_t>(i)).second)
       fail_input(where, fmt::format("node {} is defined twice", node_tags[i]), "give every node its own tag");
@@ -122,8 +123,9 @@ RawMesh mesh_from_gmsh_model(const std::string& where) {
       for (int k = 0; k < node_count; ++k) {
         auto found = index_of_tag.find(element_nodes[t][e * node_count + k]);
         if (found == index_of_tag.end())
-          fail_input(where, fmt::format("element {} refers to node {}, which is not defined", element_tag,
-                                        element_nodes[t][e * node_count + k]),
+          fail_input(where,
+                     fmt::format("element {} refers to node {}, which is not defined", element_tag,
+                                 element_nodes[t][e * node_count + k]),
                      "fix the node tag or add the missing node");
         cell.nodes.push_back(found->second);
       }

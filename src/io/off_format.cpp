@@ -43,8 +43,7 @@ RawMesh parse_off(std::string_view text, const std::string& where) {
 std::string off_text(const QuadSurface& surface) {
   fmt::memory_buffer out;
   fmt::format_to(std::back_inserter(out), "OFF\n{} {} 0\n", surface.points.size(), surface.quads.size());
-  for (const Vec3& p : surface.points)
-    fmt::format_to(std::back_inserter(out), "{} {} {}\n", p[0], p[1], p[2]);
+  for (const Vec3& p : surface.points) fmt::format_to(std::back_inserter(out), "{} {} {}\n", p[0], p[1], p[2]);
   for (const Quad& q : surface.quads)
     fmt::format_to(std::back_inserter(out), "4 {} {} {} {}\n", q[0], q[1], q[2], q[3]);
   return fmt::to_string(out);

@@ -16,8 +16,7 @@ void check_finite_points(const RawMesh& raw, const std::string& where) {
     if (std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); })) continue;
     bool has_nan = std::any_of(p.begin(), p.end(), [](double x) { return std::isnan(x); });
     fail_input(where,
-               fmt::format("node {} has a{} coordinate", i + raw.node_numbering_base,
-                           has_nan ? " NaN" : "n infinite"),
+               fmt::format("node {} has a{} coordinate", i + raw.node_numbering_base, has_nan ? " NaN" : "n infinite"),
                "every coordinate must be a finite number; fix or remove that node");
   }
 }
@@ -31,8 +30,7 @@ std::array<std::uint32_t, N> checked_nodes(const RawCell& cell, const RawMesh& r
     if (index < 0 || static_cast<std::uint64_t>(index) >= raw.points.size())
       fail_input(where,
                  fmt::format("{} refers to node {}, but nodes are numbered {} to {}", label,
-                             index + raw.node_numbering_base,
-                             raw.node_numbering_base,
+                             index + raw.node_numbering_base, raw.node_numbering_base,
                              static_cast<std::int64_t>(raw.points.size()) - 1 + raw.node_numbering_base),
                  "fix the node index or add the missing node");
     nodes[k] = static_cast<std::uint32_t>(index);
@@ -42,8 +40,7 @@ std::array<std::uint32_t, N> checked_nodes(const RawCell& cell, const RawMesh& r
 
 void check_point_count(const RawMesh& raw, const std::string& where) {
   if (raw.points.size() > std::numeric_limits<std::uint32_t>::max())
-    fail_input(where, fmt::format("{} nodes is more than Loom can index", raw.points.size()),
-               "split the mesh");
+    fail_input(where, fmt::format("{} nodes is more than Loom can index", raw.points.size()), "split the mesh");
 }
 
 }  // namespace
@@ -63,8 +60,8 @@ QuadSurface to_quad_surface(RawMesh&& raw, const std::string& where) {
       case CellKind::polygon:
         if (cell.nodes.size() != 4)
           fail_input(where,
-                     fmt::format("face {} ({}) has {} nodes, not 4", surface.quads.size(),
-                                 describe(cell.origin), cell.nodes.size()),
+                     fmt::format("face {} ({}) has {} nodes, not 4", surface.quads.size(), describe(cell.origin),
+                                 cell.nodes.size()),
                      "only quad faces can bound a hex mesh; remesh the surface with quads only");
         surface.quads.push_back(checked_nodes<4>(
             cell, raw, fmt::format("face {} ({})", surface.quads.size(), describe(cell.origin)), where));
@@ -72,8 +69,7 @@ QuadSurface to_quad_surface(RawMesh&& raw, const std::string& where) {
       case CellKind::hexahedron:
       case CellKind::other_volume:
         fail_input(where,
-                   fmt::format("{} is a volume cell ({}), not a surface face", describe(cell.origin),
-                               cell.type_name),
+                   fmt::format("{} is a volume cell ({}), not a surface face", describe(cell.origin), cell.type_name),
                    "give a quad surface mesh; to use a hex mesh, extract its boundary first");
       case CellKind::unsupported:
         fail_input(where, fmt::format("{} has unsupported cell type {}", describe(cell.origin), cell.type_name),

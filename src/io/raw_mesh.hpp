@@ -24,7 +24,7 @@ struct RawCell {
   CellKind kind = CellKind::unsupported;
   std::vector<std::int64_t> nodes;  ///< 0-based, not yet range-checked
   CellOrigin origin;
-  std::string type_name;            ///< e.g. "tetrahedron"; used in messages
+  std::string type_name;  ///< e.g. "tetrahedron"; used in messages
 };
 
 struct RawMesh {

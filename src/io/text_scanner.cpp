@@ -20,8 +20,7 @@ std::string read_input_file(const std::filesystem::path& file) {
   const std::string where = file.string();
   std::error_code ec;
   auto status = fs::status(file, ec);
-  if (ec || !fs::exists(status))
-    fail_input(where, "file not found", "check the path");
+  if (ec || !fs::exists(status)) fail_input(where, "file not found", "check the path");
   if (fs::is_directory(status)) fail_input(where, "is a directory, not a mesh file", "give a file");
   std::ifstream in(file, std::ios::binary);
   if (!in) fail_input(where, "cannot open file for reading", "check its permissions");
@@ -38,8 +37,10 @@ std::string printable(std::string_view text) {
   out.reserve(text.size());
   for (char c : text) {
     auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte < 0x7f) out += c;
-    else out += fmt::format("\\x{:02x}", byte);
+    if (byte >= 0x20 && byte < 0x7f)
+      out += c;
+    else
+      out += fmt::format("\\x{:02x}", byte);
   }
   return out;
 }
@@ -93,8 +94,7 @@ void TextScanner::skip_blanks(bool cross_lines) {
 std::string_view TextScanner::token() {
   skip_blanks(true);
   std::size_t start = pos_;
-  while (pos_ < text_.size() && !is_space(text_[pos_]) && !(comment_ != '\0' && text_[pos_] == comment_))
-    ++pos_;
+  while (pos_ < text_.size() && !is_space(text_[pos_]) && !(comment_ != '\0' && text_[pos_] == comment_)) ++pos_;
   token_line_ = line_;
   return text_.substr(start, pos_ - start);
 }
@@ -189,8 +189,7 @@ std::size_t TextScanner::count(std::string_view what) {
   // Every counted item needs at least one byte, so a larger count cannot be
   // honoured; rejecting it here also keeps a corrupt count from allocating.
   if (value < 0 || static_cast<std::uint64_t>(value) > text_.size())
-    fail(fmt::format("{} is {}, which this file cannot hold", what, value),
-         "fix the count (the file may be corrupt)");
+    fail(fmt::format("{} is {}, which this file cannot hold", what, value), "fix the count (the file may be corrupt)");
   return static_cast<std::size_t>(value);
 }
 

@@ -15,7 +15,7 @@ namespace loom {
 std::string read_input_file(const std::filesystem::path& file);
 
 class TextScanner {
-public:
+ public:
   /// `comment`: a character that starts a comment running to the end of the line
   /// ('\0' for none).
   TextScanner(std::string_view text, std::string where, char comment = '\0');
@@ -67,7 +67,7 @@ public:
 
   const std::string& where() const { return where_; }
 
-private:
+ private:
   void skip_blanks(bool cross_lines);
 
   std::string_view text_;

@@ -2,10 +2,10 @@
 // DATASET UNSTRUCTURED_GRID (POINTS, CELLS, CELL_TYPES) or POLYDATA (POINTS,
 // VERTICES, LINES, POLYGONS). Both the classic cell layout and the 5.x
 // OFFSETS/CONNECTIVITY layout are read. Attribute data after the geometry is ignored.
+#include <fmt/format.h>
+
 #include <bit>
 #include <optional>
-
-#include <fmt/format.h>
 
 #include "src/io/formats.hpp"
 #include "src/io/text_scanner.hpp"
@@ -24,7 +24,7 @@ std::string_view trimmed(std::string_view s) {
 
 // Reads the numeric payload of one section, as ASCII tokens or big-endian binary.
 class VtkValues {
-public:
+ public:
   VtkValues(TextScanner& in, bool binary) : in_(in), binary_(binary) {}
 
   /// The binary payload starts on the line after its keyword line; call once the
@@ -37,20 +37,19 @@ public:
     if (!binary_) return in_.real(what);
     if (type == "float") return std::bit_cast<float>(big_endian<std::uint32_t>(what));
     if (type == "double") return std::bit_cast<double>(big_endian<std::uint64_t>(what));
-    in_.fail(fmt::format("binary POINTS of type '{}' are not supported", type), "store points as float or double");
+    in_.fail(fmt::format("binary POINTS of type {} are not supported", quote_token(type)),
+             "store points as float or double");
   }
 
   std::int64_t integer(std::string_view type, std::string_view what) {
     if (!binary_) return in_.integer(what);
-    if (type == "int" || type == "vtktypeint32")
-      return static_cast<std::int32_t>(big_endian<std::uint32_t>(what));
-    if (type == "vtktypeint64" || type == "long")
-      return static_cast<std::int64_t>(big_endian<std::uint64_t>(what));
-    in_.fail(fmt::format("binary integers of type '{}' are not supported", type),
+    if (type == "int" || type == "vtktypeint32") return static_cast<std::int32_t>(big_endian<std::uint32_t>(what));
+    if (type == "vtktypeint64" || type == "long") return static_cast<std::int64_t>(big_endian<std::uint64_t>(what));
+    in_.fail(fmt::format("binary integers of type {} are not supported", quote_token(type)),
              "store cells as int, vtktypeint32 or vtktypeint64");
   }
 
-private:
+ private:
   template <class Word>
   Word big_endian(std::string_view what) {
     std::size_t at = in_.offset();
@@ -167,7 +166,8 @@ RawMesh parse_legacy_vtk(std::string_view text, const std::string& where) {
                (keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" || keyword == "TRIANGLE_STRIPS")) {
       int vtk_type = keyword == "VERTICES" ? 2 : keyword == "LINES" ? 4 : keyword == "POLYGONS" ? 7 : 6;
       for (auto& nodes : read_cell_block(in, values, keyword).cells)
-        mesh.cells.push_back(vtk_cell(vtk_type, std::move(nodes), {"cell", static_cast<std::int64_t>(mesh.cells.size())}));
+        mesh.cells.push_back(
+            vtk_cell(vtk_type, std::move(nodes), {"cell", static_cast<std::int64_t>(mesh.cells.size())}));
     } else if (keyword == "POINT_DATA" || keyword == "CELL_DATA" || keyword == "FIELD") {
       break;  // attributes: nothing a mesh needs
     } else {
@@ -181,12 +181,11 @@ RawMesh parse_legacy_vtk(std::string_view text, const std::string& where) {
     if (!unstructured_cells) in.fail_truncated("CELLS");
     if (!have_cell_types) in.fail_truncated("CELL_TYPES");
     if (cell_types.size() != unstructured_cells->cells.size())
-      fail_input(where,
-                 fmt::format("{} cells but {} cell types", unstructured_cells->cells.size(), cell_types.size()),
+      fail_input(where, fmt::format("{} cells but {} cell types", unstructured_cells->cells.size(), cell_types.size()),
                  "CELLS and CELL_TYPES must list the same number of cells");
     for (std::size_t i = 0; i < cell_types.size(); ++i)
-      mesh.cells.push_back(vtk_cell(cell_types[i], std::move(unstructured_cells->cells[i]),
-                                    {"cell", static_cast<std::int64_t>(i)}));
+      mesh.cells.push_back(
+          vtk_cell(cell_types[i], std::move(unstructured_cells->cells[i]), {"cell", static_cast<std::int64_t>(i)}));
   }
   return mesh;
 }

@@ -1,11 +1,11 @@
 // VTK XML UnstructuredGrid (.vtu) with format="ascii" data arrays. Binary and
 // appended arrays are refused with a hint to re-save as ASCII. Several pieces are
 // concatenated.
-#include <sstream>
+#include <fmt/format.h>
 
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
-#include <fmt/format.h>
+#include <sstream>
 
 #include "src/io/formats.hpp"
 #include "src/io/text_scanner.hpp"
@@ -22,8 +22,7 @@ std::string attribute(const ptree& node, const std::string& name) {
   return node.get<std::string>("<xmlattr>." + name, "");
 }
 
-const ptree& child(const ptree& parent, const std::string& name, const std::string& context,
-                   const std::string& where) {
+const ptree& child(const ptree& parent, const std::string& name, const std::string& context, const std::string& where) {
   auto found = parent.get_child_optional(name);
   if (!found) fail_input(where, fmt::format("{} has no <{}> element", context, name), "fix or re-export the file");
   return *found;
@@ -37,8 +36,9 @@ std::vector<std::string_view> array_tokens(const ptree& parent, const std::strin
     if (tag != "DataArray" || (!name.empty() && attribute(node, "Name") != name)) continue;
     std::string format = attribute(node, "format");
     if (format != "ascii")
-      fail_input(where, fmt::format("{} data array is stored as {}, which Loom cannot read", context,
-                                    format.empty() ? "(no format)" : quote_token(format)),
+      fail_input(where,
+                 fmt::format("{} data array is stored as {}, which Loom cannot read", context,
+                             format.empty() ? "(no format)" : quote_token(format)),
                  "re-save the file with ASCII data (ParaView: Save Data, Data Mode Ascii)");
     std::vector<std::string_view> tokens;
     const std::string& text = node.data();
@@ -101,11 +101,11 @@ void read_piece(const ptree& piece, std::size_t piece_index, RawMesh& mesh, cons
   const ptree& cells = child(piece, "Cells", label, where);
   auto offsets = numbers<std::int64_t>(array_tokens(cells, "offsets", label + " Cells", where), cell_count,
                                        label + " offsets", where);
-  auto types = numbers<std::int64_t>(array_tokens(cells, "types", label + " Cells", where), cell_count,
-                                     label + " types", where);
+  auto types =
+      numbers<std::int64_t>(array_tokens(cells, "types", label + " Cells", where), cell_count, label + " types", where);
   auto connectivity_tokens = array_tokens(cells, "connectivity", label + " Cells", where);
-  auto connectivity = numbers<std::int64_t>(connectivity_tokens, connectivity_tokens.size(),
-                                            label + " connectivity", where);
+  auto connectivity =
+      numbers<std::int64_t>(connectivity_tokens, connectivity_tokens.size(), label + " connectivity", where);
   std::int64_t begin = 0;
   for (std::size_t c = 0; c < cell_count; ++c) {
     std::int64_t end = offsets[c];
@@ -114,8 +114,8 @@ void read_piece(const ptree& piece, std::size_t piece_index, RawMesh& mesh, cons
                  "fix the offsets array");
     std::vector<std::int64_t> nodes(connectivity.begin() + begin, connectivity.begin() + end);
     for (auto& n : nodes) n += first_point;
-    mesh.cells.push_back(vtk_cell(static_cast<int>(types[c]), std::move(nodes),
-                                  {"cell", static_cast<std::int64_t>(mesh.cells.size())}));
+    mesh.cells.push_back(
+        vtk_cell(static_cast<int>(types[c]), std::move(nodes), {"cell", static_cast<std::int64_t>(mesh.cells.size())}));
     begin = end;
   }
 }

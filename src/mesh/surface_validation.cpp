@@ -3,12 +3,12 @@
 // too, so a problem can be found whatever numbering a viewer uses.
 #include "src/mesh/surface_validation.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "src/util/error.hpp"
 
@@ -17,7 +17,7 @@ namespace loom {
 namespace {
 
 class UnionFind {
-public:
+ public:
   explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
   std::size_t find(std::size_t x) {
     while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
@@ -29,7 +29,7 @@ public:
     if (a != b) parent_[std::max(a, b)] = std::min(a, b);
   }
 
-private:
+ private:
   std::vector<std::size_t> parent_;
 };
 
@@ -62,8 +62,10 @@ void check_quads_well_formed(const QuadSurface& s, const std::string& where, con
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
         if (quad[a] == quad[b])
-          fail_input(where, fmt::format("{}degenerate quad {} (nodes {}) uses node {} twice", stage, q, nodes_of(quad), quad[a]),
-                     "a quad needs four distinct nodes; remove the quad or fix its nodes");
+          fail_input(
+              where,
+              fmt::format("{}degenerate quad {} (nodes {}) uses node {} twice", stage, q, nodes_of(quad), quad[a]),
+              "a quad needs four distinct nodes; remove the quad or fix its nodes");
   }
   std::vector<std::pair<Quad, std::size_t>> sorted;
   sorted.reserve(s.quads.size());
@@ -75,8 +77,9 @@ void check_quads_well_formed(const QuadSurface& s, const std::string& where, con
   std::sort(sorted.begin(), sorted.end());
   for (std::size_t i = 1; i < sorted.size(); ++i)
     if (sorted[i].first == sorted[i - 1].first)
-      fail_input(where, fmt::format("{}duplicated quads {} and {} use the same nodes ({})", stage, sorted[i - 1].second,
-                                    sorted[i].second, nodes_of(s.quads[sorted[i].second])),
+      fail_input(where,
+                 fmt::format("{}duplicated quads {} and {} use the same nodes ({})", stage, sorted[i - 1].second,
+                             sorted[i].second, nodes_of(s.quads[sorted[i].second])),
                  "remove one of them");
 }
 
@@ -103,9 +106,8 @@ double bounding_box_diagonal(const QuadSurface& s, const std::vector<std::uint32
 std::size_t handle_coincident_nodes(QuadSurface& s, const std::string& where, const SurfaceCheckOptions& options) {
   std::vector<std::uint32_t> nodes = used_nodes(s);
   const double tolerance = options.weld ? options.weld_tolerance * bounding_box_diagonal(s, nodes) : 0.0;
-  std::sort(nodes.begin(), nodes.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return std::tie(s.points[a], a) < std::tie(s.points[b], b);
-  });
+  std::sort(nodes.begin(), nodes.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return std::tie(s.points[a], a) < std::tie(s.points[b], b); });
   UnionFind clusters(s.points.size());
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     for (std::size_t j = i + 1; j < nodes.size(); ++j) {
@@ -113,8 +115,9 @@ std::size_t handle_coincident_nodes(QuadSurface& s, const std::string& where, co
       if (q[0] - p[0] > tolerance) break;  // sorted by x first: no later node is close
       if (norm(q - p) > tolerance) continue;
       if (!options.weld)
-        fail_input(where, fmt::format("coincident nodes {} and {} are both at ({}, {}, {})", std::min(nodes[i], nodes[j]),
-                                      std::max(nodes[i], nodes[j]), p[0], p[1], p[2]),
+        fail_input(where,
+                   fmt::format("coincident nodes {} and {} are both at ({}, {}, {})", std::min(nodes[i], nodes[j]),
+                               std::max(nodes[i], nodes[j]), p[0], p[1], p[2]),
                    "merge them into one node, or weld them (--weld)");
       clusters.unite(nodes[i], nodes[j]);
     }
@@ -171,7 +174,8 @@ std::size_t check_edges_manifold_and_closed(const QuadSurface& s, const std::vec
     if (n > 2) {
       std::string quads;
       for (std::size_t k = 0; k < n; ++k) quads += fmt::format("{}{}", k ? ", " : "", halves[i + k].quad);
-      fail_input(where, fmt::format("non-manifold edge: {} is shared by {} quads ({})", edge_name(s, halves[i]), n, quads),
+      fail_input(where,
+                 fmt::format("non-manifold edge: {} is shared by {} quads ({})", edge_name(s, halves[i]), n, quads),
                  "every edge of a closed surface borders exactly two quads; split the surface there or remove quads");
     }
     if (n == 1 && boundary++ == 0) first_boundary = &halves[i];
@@ -210,8 +214,8 @@ void check_vertices_manifold(const QuadSurface& s, const std::vector<HalfEdge>& 
     while (j < node_fans.size() && node_fans[j].first == node_fans[i].first) ++j;
     if (j - i > 1)
       fail_input(where,
-                 fmt::format("non-manifold vertex: the quads around {} form {} separate fans", at(s, node_fans[i].first),
-                             j - i),
+                 fmt::format("non-manifold vertex: the quads around {} form {} separate fans",
+                             at(s, node_fans[i].first), j - i),
                  "the surface touches itself at that node; give each part its own copy of the node or remesh there");
     i = j;
   }
@@ -223,8 +227,8 @@ void check_orientation(const QuadSurface& s, const std::vector<HalfEdge>& halves
     if (a.forward != b.forward) return;
     std::uint32_t from = a.forward ? a.low : a.high, to = a.forward ? a.high : a.low;
     fail_input(where,
-               fmt::format("inconsistent orientation: quads {} and {} both run from node {} to node {} along {}", a.quad,
-                           b.quad, from, to, edge_name(s, a)),
+               fmt::format("inconsistent orientation: quads {} and {} both run from node {} to node {} along {}",
+                           a.quad, b.quad, from, to, edge_name(s, a)),
                "neighbouring quads must traverse their shared edge in opposite directions; reverse the node order of "
                "one of them (or re-orient the whole surface consistently)");
   });

@@ -54,4 +54,30 @@ HexMesh to_hex_mesh(const Stc& stc, std::vector<bool>* on_boundary) {
   return mesh;
 }
 
+HexMesh woven_hexes(const Stc& stc) {
+  const engine::Graph& g = stc.graph();
+  const StcSchema& ids = stc.ids();
+  HexMesh mesh;
+  std::vector<std::uint32_t> index(g.id_bound(), UINT32_MAX);
+  for (Id h : g.members(ids.hex)) {
+    Hex hex{};
+    bool whole = true;
+    for (unsigned k = 0; k < 8 && whole; ++k) {
+      Id n = corner_node(stc, h, k);
+      if (n == no_element) {
+        whole = false;
+        break;
+      }
+      if (index[n] == UINT32_MAX) {
+        index[n] = static_cast<std::uint32_t>(mesh.points.size());
+        std::int32_t p = g.get(n, ids.node_point);
+        mesh.points.push_back(p >= 0 ? stc.points().at(static_cast<std::size_t>(p)) : Vec3{0, 0, 0});
+      }
+      hex[k] = index[n];
+    }
+    if (whole) mesh.hexes.push_back(hex);
+  }
+  return mesh;
+}
+
 }  // namespace loom::stc

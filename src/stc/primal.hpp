@@ -24,4 +24,8 @@ Id corner_node(const Stc& stc, Id hex, unsigned k);
 /// boundary surface.
 HexMesh to_hex_mesh(const Stc& stc, std::vector<bool>* on_boundary = nullptr);
 
+/// The hexes of a weave in progress: every non-degenerate hex, with the nodes
+/// it uses (unplaced nodes at the origin). For inspecting a weave that did not close.
+HexMesh woven_hexes(const Stc& stc);
+
 }  // namespace loom::stc

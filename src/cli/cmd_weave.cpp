@@ -1,0 +1,179 @@
+// `loom weave SURFACE -o HEXMESH [...]`: the whole pipeline, surface in, hex
+// mesh out. Exit 0: closed, valid, every scaled Jacobian > 0; 3: closed and
+// combinatorially valid but some scaled Jacobian <= 0 (written anyway); 1: not
+// closed or not valid (nothing written); 2: bad input or usage.
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "engine/rule_compiler.hpp"
+#include "engine/rule_parser.hpp"
+#include "src/cli/command.hpp"
+#include "src/io/hex_io.hpp"
+#include "src/io/surface_io.hpp"
+#include "src/mesh/surface_validation.hpp"
+#include "src/stc/primal.hpp"
+#include "src/stc/sheet_diagram.hpp"
+#include "src/util/atomic_file.hpp"
+#include "src/util/error.hpp"
+#include "src/weave/pipeline.hpp"
+#include "src/weave/step_dump.hpp"
+
+namespace {
+
+struct Options {
+  std::string surface, output, rules, strategy = "priority", dot_dir, trace, report;
+  std::uint64_t seed = 0;
+  bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false;
+};
+
+std::vector<loom::engine::Rule> load_rules(const std::string& dir) {
+  try {
+    return loom::engine::load_rule_dir(dir, *loom::stc::StcSchema::get().schema);
+  } catch (const loom::engine::RuleError& e) {
+    throw loom::InputError(std::string(e.what()) + "; fix the rule file or pass another --rules DIR");
+  }
+}
+
+loom::engine::Strategy parse_strategy(const Options& o) {
+  try {
+    auto s = loom::engine::Strategy::parse(o.strategy);
+    if (o.seed_given) s.seed = o.seed;
+    return s;
+  } catch (const std::invalid_argument& e) {
+    throw loom::InputError(e.what());
+  }
+}
+
+/// One line per application: step, rule, anchor, then variable=element.
+std::string trace_line(const loom::engine::Application& a) {
+  std::string line = fmt::format("{} {} anchor={}", a.step, a.rule->name, a.matched.anchor());
+  for (int v = 0; v < a.rule->pattern_vars; ++v)
+    line += fmt::format(" {}={}", a.rule->vars[v].name, a.matched.elements[v]);
+  return line + "\n";
+}
+
+nlohmann::json report_json(const Options& o, const loom::weave::MeshingResult& r, const std::string& strategy) {
+  nlohmann::json j;
+  j["input"] = o.surface;
+  j["strategy"] = strategy;
+  j["seed"] = o.seed;
+  j["closed"] = r.weave.closed;
+  j["steps"] = r.weave.steps;
+  j["rule_applications"] = r.weave.applications;
+  j["whiskers_left"] = r.weave.whiskers_left;
+  j["hexes"] = r.stc.hexes();
+  j["sheets"] = r.stc.sheets();
+  j["chords"] = r.stc.chords();
+  j["valid"] = r.check && r.check->valid();
+  j["combinatorially_valid"] = r.combinatorially_valid();
+  if (r.check) {
+    j["min_scaled_jacobian"] = r.check->quality.min_scaled_jacobian;
+    j["mean_scaled_jacobian"] = r.check->quality.mean_scaled_jacobian;
+    j["below_zero"] = r.check->quality.below_zero;
+    j["below_0_2"] = r.check->quality.below_0_2;
+  }
+  j["smoothing_iterations"] = r.smoothing.iterations;
+  j["match_attempts"] = r.weave.counters.match_attempts;
+  j["seconds"] = r.seconds;
+  if (!r.weave.closed) j["left"] = r.weave.left;
+  if (!r.failure.empty()) j["failure"] = r.failure;
+  return j;
+}
+
+/// --partial: the hexes woven so far as OUTPUT-stem.partial.EXT, and the STC
+/// with its sheet diagrams in the directory OUTPUT-stem.partial/.
+void write_partial(const std::filesystem::path& output, const loom::stc::Stc& stc) {
+  std::filesystem::path mesh = output, dir = output;
+  mesh.replace_extension(".partial" + output.extension().string());
+  dir.replace_extension(".partial");
+  loom::write_hex_mesh(mesh, loom::stc::woven_hexes(stc));
+  loom::stc::write_stc_dot(stc, dir);
+  std::cerr << fmt::format("partial state: {} (hexes woven so far) and {}/ (STC and sheet diagrams)\n", mesh.string(),
+                           dir.string());
+}
+
+int run(const Options& o) {
+  loom::QuadSurface surface = loom::read_surface(o.surface);
+  loom::validate_surface(surface, o.surface, {.weld = o.weld});
+  auto rules = load_rules(o.rules.empty() ? loom::weave::default_rules_dir().string() : o.rules);
+  loom::weave::WeaveOptions options;
+  options.strategy = parse_strategy(o);
+
+  std::string trace;
+  std::optional<loom::weave::StepDumper> steps;
+  if (o.dot_steps) steps.emplace(std::filesystem::path(o.dot_dir) / "steps", true);
+  bool progress = !o.quiet && ::isatty(STDERR_FILENO);
+  auto last = std::chrono::steady_clock::now();
+  options.after_step = [&](const loom::engine::Application& a, const loom::stc::Stc& stc) {
+    if (!o.trace.empty()) trace += trace_line(a);
+    if (steps) steps->dump(a, stc);
+    if (progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(250)) {
+      last = std::chrono::steady_clock::now();
+      std::cerr << fmt::format("\rweaving: {} steps, {} hexes, {} whiskers left   ", a.step, stc.hexes(), stc.whiskers());
+    }
+  };
+
+  auto result = loom::weave::mesh_surface(surface, std::move(rules), options);
+  if (progress) std::cerr << "\r" << std::string(60, ' ') << "\r";
+
+  // Diagnostics describe the run whatever its outcome; the mesh is written only on success.
+  if (!o.trace.empty()) loom::write_text_atomically(o.trace, trace);
+  if (!o.report.empty())
+    loom::write_text_atomically(o.report, report_json(o, result, options.strategy.name()).dump(2) + "\n");
+  if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir);
+
+  if (!result.weave.closed) {
+    std::cerr << "loom: weave did not close: " << result.weave.left << "; try another --strategy or add rules\n";
+    if (o.partial) write_partial(o.output, result.stc);
+    return 1;
+  }
+  if (!result.combinatorially_valid()) {
+    const auto* fail = result.check ? result.check->first_failure() : nullptr;
+    std::cerr << "loom: weave closed but the result is not a valid hex mesh: "
+              << (fail ? fmt::format("criterion {} ({}) fails: {}", fail->number, fail->name, fail->detail) : result.failure)
+              << "; nothing written\n";
+    return 1;
+  }
+  loom::write_hex_mesh(o.output, *result.mesh);
+  const auto& q = result.check->quality;
+  std::string counts;
+  for (const auto& [rule, n] : result.weave.applications) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", rule, n);
+  std::cout << fmt::format("woven: {} hexes in {} steps ({}); min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
+                           result.mesh->hexes.size(), result.weave.steps, counts, q.min_scaled_jacobian,
+                           q.mean_scaled_jacobian, o.output);
+  if (q.below_zero > 0) {
+    std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}); the mesh is written "
+                             "for its connectivity\n", q.below_zero, q.min_scaled_jacobian);
+    return 3;
+  }
+  return 0;
+}
+
+loom::cli::Register reg{{"weave", [](CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.description("Weave a hex mesh whose boundary is exactly the given closed quad surface");
+  app.add_option("SURFACE", o->surface, "closed all-quad surface (.obj .off .vtk .vtu .msh)")->required()->check(CLI::ExistingFile);
+  app.add_option("-o,--output", o->output, "hex mesh to write (.vtk .vtu .msh)")->required();
+  app.add_option("--rules", o->rules, "directory of *.rule files (default: the shipped rules/)");
+  app.add_option("--strategy", o->strategy, "priority (default), random, sequence:RULE,RULE..., or a strategy file");
+  app.add_option("--seed", o->seed, "seed of the random strategy")->each([o](const std::string&) { o->seed_given = true; });
+  app.add_option("--dot", o->dot_dir, "write the final STC and its sheet diagrams (DOT and SVG) into this directory");
+  app.add_flag("--dot-steps", o->dot_steps, "also write one picture per rule application into DIR/steps");
+  app.add_option("--trace", o->trace, "write one line per rule application to this file");
+  app.add_option("--report", o->report, "write a JSON report to this file");
+  app.add_flag("--partial", o->partial, "when the weave does not close, write its state as DOT for inspection");
+  app.add_flag("-q,--quiet", o->quiet, "no progress line");
+  app.add_flag("--weld", o->weld, "merge coincident surface nodes instead of rejecting them");
+  return std::function<int()>([o] {
+    if (o->dot_steps && o->dot_dir.empty()) throw loom::InputError("--dot-steps needs --dot DIR to write into");
+    return run(*o);
+  });
+}}};
+
+}  // namespace

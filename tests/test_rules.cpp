@@ -1,0 +1,191 @@
+// Rule files: parse and compile errors name file:line:column; the anchored
+// matcher finds exactly what Boost's VF2 finds; a new rule file is applied
+// without recompiling.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/engine.hpp"
+#include "engine/rule_compiler.hpp"
+#include "engine/rule_parser.hpp"
+#include "engine/vf2_reference.hpp"
+#include "src/gen/generators.hpp"
+#include "src/stc/build.hpp"
+#include "src/weave/pipeline.hpp"
+#include "tests/support.hpp"
+
+using namespace loom;
+using loom::test::run_cli;
+using loom::test::ScratchDir;
+
+namespace {
+const engine::Schema& schema() { return *stc::StcSchema::get().schema; }
+
+std::string compile_error(const std::string& text) {
+  try {
+    engine::compile_rules(text, "bad.rule", schema());
+  } catch (const engine::RuleError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void write(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+}  // namespace
+
+TEST_CASE("broken rule files fail at load time with file:line:column") {
+  CHECK(compile_error("rule r {\n  match {\n    v: node\n    v.nosuchport == v\n  }\n}\n") ==
+        "bad.rule:4:5: a node has no port 'nosuchport'");
+  CHECK(compile_error("rule r { match { v: vertex } }") ==
+        "bad.rule:1:18: expected a kind (hex, face, edge, node, chord, sheet), found 'vertex'");
+  CHECK(compile_error("rule r { match { f: face\n f.node == f } }") ==
+        "bad.rule:2:2: port 'node' has 4 slots: give an index, e.g. node[0] or node[_]");
+  CHECK(compile_error("rule r { match { v: node } rewrite { v.point = } }") ==
+        "bad.rule:1:48: expected a number, a name, 'none', 'max(...)', 'min(...)' or '(', found '}'");
+  CHECK(compile_error("rule r { priority x }") == "bad.rule:1:19: expected a number, found 'x'");
+  CHECK(compile_error("rule r { match { v: node } rewrite { call frobnicate(v) } }").empty());  // actions are checked by the engine
+  CHECK(compile_error("rule r { match { v: node\n f: face\n f.node[2] == w } }") == "bad.rule:3:2: unknown variable 'w'");
+  CHECK(compile_error("rule r { match { v: node $ } }") == "bad.rule:1:26: unexpected character '$'");
+  CHECK(compile_error("") == "bad.rule:1:1: expected 'rule', found end of file");
+}
+
+TEST_CASE("an unknown action is reported when the engine is built") {
+  stc::Stc stc = stc::build_from_surface(gen::box(1, 1, 1));
+  auto rules = engine::compile_rules("rule r { match { v: node } rewrite { call frobnicate(v) } }", "x.rule", schema());
+  CHECK_THROWS_WITH_AS(engine::Engine(stc.graph(), rules, weave::weave_actions(stc), {}),
+                       "x.rule:1:38: expected a known action, found 'frobnicate'", engine::RuleError);
+}
+
+TEST_CASE("the anchored matcher and VF2 find the same matches for every shipped rule") {
+  auto rules = engine::load_rule_dir(weave::default_rules_dir(), schema());
+  REQUIRE(rules.size() >= 2);
+  // Weave states of a small box: initial, and after some rule applications.
+  for (std::size_t steps : {0u, 1u, 2u, 3u, 5u, 8u}) {
+    stc::Stc stc = stc::build_from_surface(gen::box(2, 2, 1));
+    engine::Engine eng(stc.graph(), rules, weave::weave_actions(stc), {});
+    for (std::size_t s = 0; s < steps; ++s) REQUIRE(eng.step());
+    engine::Matcher matcher(stc.graph());
+    for (const auto& rule : rules) {
+      CAPTURE(rule.name);
+      CAPTURE(steps);
+      std::set<std::vector<engine::Id>> anchored, reference;
+      matcher.each(rule, [&](const engine::Match& m) {
+        std::vector<engine::Id> main(m.elements.begin(), m.elements.begin() + rule.pattern_vars);
+        if (std::set<engine::Id>(main.begin(), main.end()).size() == main.size()) anchored.insert(main);
+        return true;
+      });
+      engine::vf2_matches(stc.graph(), rule, [&](const std::vector<engine::Id>& m) {
+        reference.insert(m);
+        return true;
+      });
+      CHECK(anchored == reference);
+      MESSAGE(rule.name << " after " << steps << ": " << anchored.size() << " matches");
+      if (rule.name == "cross" && steps == 0) CHECK(anchored.size() == 8 * 3);  // 8 corners, 3 rotations
+    }
+  }
+}
+
+TEST_CASE("incremental matching chooses exactly what a full rescan after every step chooses") {
+  auto rules = engine::load_rule_dir(weave::default_rules_dir(), schema());
+  for (const auto& surface : {gen::box(3, 3, 2), gen::lshape(2), gen::box(1, 4, 2)}) {
+    std::vector<std::vector<engine::Id>> runs[2];
+    for (int full = 0; full < 2; ++full) {
+      stc::Stc stc = stc::build_from_surface(surface);
+      engine::Engine eng(stc.graph(), rules, weave::weave_actions(stc), {});
+      eng.set_full_rescan(full == 1);
+      engine::Application app;
+      while (eng.step(&app)) runs[full].push_back(app.matched.elements);
+      CHECK(stc.whiskers() == 0);
+    }
+    CHECK(runs[0].size() > 10);
+    CHECK(runs[0] == runs[1]);
+  }
+}
+
+TEST_CASE("a new rule file in a temporary directory is applied without recompiling") {
+  ScratchDir dir("rules");
+  for (auto& f : std::filesystem::directory_iterator(weave::default_rules_dir()))
+    std::filesystem::copy_file(f.path(), dir / f.path().filename().string());
+  // Marks every boundary node the moment its front valence is 3.
+  write(dir / "mark.rule", R"(rule mark {
+  priority 30
+  match {
+    v: node where boundary == 1
+    count(face.node -> v where self.cell[0] == none) == 3
+  }
+  rewrite { v.boundary = 2 }
+})");
+  auto rules = engine::load_rule_dir(dir.path(), schema());
+  auto r = weave::mesh_surface(gen::box(2, 2, 2), rules, {});
+  CHECK(r.weave.closed);
+  CHECK(r.weave.applications.at("mark") >= 8);  // at least the eight corners
+
+  write(dir / "box.obj", "");
+  REQUIRE(run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
+  auto cli = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --rules " +
+                     dir.path().string() + " --report " + (dir / "r.json").string());
+  CHECK(cli.status == 0);
+  std::ifstream report(dir / "r.json");
+  auto j = nlohmann::json::parse(report);
+  CHECK(j["rule_applications"]["mark"].get<int>() >= 8);
+}
+
+TEST_CASE("loom weave fails cleanly without the seam rule, and on a broken rule file") {
+  ScratchDir dir("noseam");
+  std::filesystem::copy_file(weave::default_rules_dir() / "cross.rule", dir / "cross.rule");
+  REQUIRE(run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
+  auto r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --rules " +
+                   dir.path().string());
+  CHECK(r.status == 1);
+  CHECK(r.err.rfind("loom: weave did not close: ", 0) == 0);
+  CHECK(r.err.find("whiskers") != std::string::npos);
+  CHECK(loom::test::count_lines(r.err) == 1);
+  CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
+
+  write(dir / "broken.rule", "rule broken {\n  match {\n    v: node\n  }\n  rewrite { v.boundary = = 1 }\n}\n");
+  r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --rules " +
+              dir.path().string());
+  CHECK(r.status == 2);
+  CHECK(loom::test::count_lines(r.err) == 1);
+  CHECK(r.err.find("broken.rule:5:26: expected a number") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
+
+  r = run_cli("rules explain " + (dir / "broken.rule").string());
+  CHECK(r.status == 2);
+  r = run_cli("rules explain " + (dir / "cross.rule").string());
+  CHECK(r.status == 0);
+  CHECK(r.out.find("anchored at v") != std::string::npos);
+}
+
+TEST_CASE("loom weave writes the mesh, trace, report and step pictures, the same on every run") {
+  ScratchDir dir("weave");
+  REQUIRE(run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
+  std::string base = "weave " + (dir / "box.obj").string() + " --strategy random --seed 5";
+  auto a = run_cli(base + " -o " + (dir / "a.vtk").string() + " --trace " + (dir / "a.trace").string() + " --dot " +
+                   (dir / "dot").string() + " --dot-steps --report " + (dir / "a.json").string());
+  auto b = run_cli(base + " -o " + (dir / "b.vtk").string() + " --trace " + (dir / "b.trace").string());
+  REQUIRE(a.status == 0);
+  REQUIRE(b.status == 0);
+  auto slurp = [](const std::filesystem::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  CHECK(slurp(dir / "a.vtk") == slurp(dir / "b.vtk"));
+  CHECK(slurp(dir / "a.trace") == slurp(dir / "b.trace"));
+  auto j = nlohmann::json::parse(slurp(dir / "a.json"));
+  CHECK(j["hexes"] == 8);
+  CHECK(j["closed"] == true);
+  CHECK(j["valid"] == true);
+  int steps = j["steps"];
+  CHECK(loom::test::count_lines(slurp(dir / "a.trace")) == steps);
+  int step_pictures = 0;
+  for (auto& f : std::filesystem::directory_iterator(dir / "dot" / "steps"))
+    step_pictures += f.path().extension() == ".svg" && f.path().filename().string().find("sheet") == std::string::npos;
+  CHECK(step_pictures == steps);
+  CHECK(run_cli("check " + (dir / "a.vtk").string() + " --boundary " + (dir / "box.obj").string()).status == 0);
+}
