@@ -38,6 +38,7 @@ void write_dot(std::ostream& out, const Graph& g, const DotStyle& style) {
   };
   auto graph_writer = [&](std::ostream& os) {
     os << "label=" << dot_quote(style.graph_name) << ";\nnode [shape=box, fontsize=10];\nedge [fontsize=8];\n";
+    if (!style.layout.empty()) os << "layout=" << style.layout << "; overlap=false; splines=true;\n";
   };
   if (style.only.empty()) {
     boost::write_graphviz(out, g, vertex_writer, edge_writer, graph_writer);

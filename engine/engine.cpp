@@ -83,7 +83,7 @@ bool Engine::try_rule_queue(std::size_t r, Application* applied) {
       queue.push({key, top.anchor});
       continue;
     }
-    apply(r, m, applied);
+    apply_rule(r, m, applied);
     return true;
   }
   return false;
@@ -111,12 +111,70 @@ bool Engine::try_random_tier(const std::vector<std::size_t>& tier, Application* 
     Match m;
     ++counters_.match_attempts;
     if (!g_.alive(anchor) || !matcher_.first_at(rules_[r], anchor, m)) continue;
-    apply(r, m, applied);
+    apply_rule(r, m, applied);
     return true;
   }
 }
 
-void Engine::apply(std::size_t r, Match& m, Application* applied) {
+std::vector<Match> Engine::choices(std::size_t limit) {
+  std::vector<Match> out;
+  for (const auto& tier : tiers_) {
+    for (std::size_t r : tier) {
+      const Rule& rule = rules_[r];
+      if (strategy_.kind == Strategy::Kind::random) {
+        // The pool in a seeded shuffled order; invalid anchors leave the pool.
+        auto& pool = state_[r].pool;
+        std::shuffle(pool.begin(), pool.end(), rng_);
+        for (std::size_t i = 0; i < pool.size() && out.size() < limit;) {
+          Match m;
+          ++counters_.match_attempts;
+          if (g_.alive(pool[i]) && matcher_.first_at(rule, pool[i], m)) {
+            out.push_back(std::move(m));
+            ++i;
+          } else {
+            state_[r].pooled[pool[i]] = false;
+            pool[i] = pool.back();
+            pool.pop_back();
+          }
+        }
+        continue;
+      }
+      auto& queue = state_[r].queue;
+      std::vector<Entry> keep;
+      while (!queue.empty() && out.size() < limit) {
+        Entry top = queue.top();
+        queue.pop();
+        Match m;
+        ++counters_.match_attempts;
+        if (!g_.alive(top.anchor) || !matcher_.first_at(rule, top.anchor, m)) continue;
+        std::int64_t key = rule.order ? matcher_.evaluate(*rule.order, m) : 0;
+        if (key > top.key) {
+          queue.push({key, top.anchor});
+          continue;
+        }
+        bool seen = std::any_of(keep.begin(), keep.end(), [&](const Entry& e) { return e.anchor == top.anchor; });
+        keep.push_back(top);
+        if (!seen) out.push_back(std::move(m));
+      }
+      for (const Entry& e : keep) queue.push(e);
+    }
+    if (!out.empty()) return out;
+  }
+  return out;
+}
+
+void Engine::apply(Match m, Application* applied) { apply_rule(rule_index(m.rule), m, applied); }
+
+void Engine::undo(Graph::Checkpoint c) {
+  ++counters_.undos;
+  log_.clear();
+  g_.set_change_log(&log_);
+  g_.rollback(c);
+  g_.set_change_log(nullptr);
+  process_changes();
+}
+
+void Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
   ++counters_.steps;
   ++applications_[rules_[r].name];
   if (applied) {
@@ -180,6 +238,7 @@ void Engine::process_changes() {
     }
     anchors.clear();
     for (const Graph::Change& c : log_) {
+      if (c.element >= g_.id_bound()) continue;  // created, then rolled back
       KindId k = g_.kind(c.element);
       for (int v = 0; v < static_cast<int>(rule.vars.size()); ++v) {
         const Variable& var = rule.vars[v];

@@ -36,6 +36,7 @@ struct EngineCounters {
   std::size_t match_attempts = 0;   ///< anchored searches run
   std::size_t candidates = 0;       ///< anchors queued
   std::size_t rescans = 0;          ///< full rescans (rules with unanchored parts)
+  std::size_t undos = 0;            ///< rollbacks to a checkpoint
 };
 
 class Engine {
@@ -46,6 +47,18 @@ public:
 
   /// Applies one match, chosen by the strategy. Returns false when no rule applies.
   bool step(Application* applied = nullptr);
+
+  // --- choices and undo, for search with backtracking -------------------------
+  /// Up to `limit` applicable matches, best first, from the highest-priority
+  /// rules that have any (what step() would apply is the first).
+  std::vector<Match> choices(std::size_t limit);
+  /// Applies a match (one of choices(), on the graph as it is now).
+  void apply(Match m, Application* applied = nullptr);
+  /// Opens a checkpoint of the graph; undo() goes back to it (and keeps it open).
+  Graph::Checkpoint mark() { return g_.checkpoint(); }
+  void undo(Graph::Checkpoint c);
+  /// Keeps the changes made since `c` for good.
+  void release(Graph::Checkpoint c) { g_.release(c); }
 
   const std::vector<Rule>& rules() const { return rules_; }
   const EngineCounters& counters() const { return counters_; }
@@ -76,7 +89,8 @@ private:
   void trace(const Rule& rule, int var, Id element, std::vector<Id>& anchors);
   bool try_rule_queue(std::size_t rule, Application* applied);
   bool try_random_tier(const std::vector<std::size_t>& tier, Application* applied);
-  void apply(std::size_t rule, Match& m, Application* applied);
+  void apply_rule(std::size_t rule, Match& m, Application* applied);
+  std::size_t rule_index(const Rule* r) const { return static_cast<std::size_t>(r - rules_.data()); }
 
   Graph& g_;
   std::vector<Rule> rules_;

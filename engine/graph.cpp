@@ -1,5 +1,7 @@
 #include "engine/graph.hpp"
 
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 namespace loom::engine {
@@ -25,6 +27,7 @@ Id Graph::add(KindId kind) {
   ++kind_live_[kind];
   ++live_;
   if (log_) log_->push_back({id, Change::Kind::created, 0});
+  if (!open_.empty()) undo_.push_back({UndoRecord::Kind::created, id, 0, 0});
   return id;
 }
 
@@ -35,6 +38,7 @@ void Graph::remove(Id e) {
   while (el.in_head != no_slot) set_slot(el.in_head, no_element);
   el.alive = false;
   if (log_) log_->push_back({e, Change::Kind::removed, 0});
+  if (!open_.empty()) undo_.push_back({UndoRecord::Kind::removed, e, 0, 0});
   kind_members_[el.kind][el.local] = no_element;
   --kind_live_[el.kind];
   --live_;
@@ -57,6 +61,7 @@ void Graph::set_slot(SlotId s, Id target) {
     if (sl.target != no_element) log_->push_back({sl.target, Change::Kind::in, port});
     if (target != no_element) log_->push_back({target, Change::Kind::in, port});
   }
+  if (!open_.empty()) undo_.push_back({UndoRecord::Kind::slot, s, sl.target, 0});
   if (sl.target != no_element) {
     ring_erase(s);
     --linked_;
@@ -110,11 +115,13 @@ void Graph::set(Id e, AttrId a, std::int32_t value) {
   const Element& el = elements_[e];
   std::int32_t& cell = columns_[el.kind][schema_->attribute(a).column][el.local];
   if (cell == value) return;
+  if (!open_.empty()) undo_.push_back({UndoRecord::Kind::attribute, e, static_cast<std::uint32_t>(cell), a});
   cell = value;
   if (log_) log_->push_back({e, Change::Kind::attribute, a});
 }
 
 std::vector<Id> Graph::compact() {
+  if (!open_.empty()) throw std::logic_error("Graph::compact: a checkpoint is open");
   std::vector<Id> remap(elements_.size(), no_element);
   Id next = 0;
   for (Id e = 0; e < elements_.size(); ++e)

@@ -20,6 +20,7 @@
 //  - ring links are mutually consistent (next->prev == this);
 //  - the per-kind member lists hold exactly the alive elements of that kind.
 #include <cstdint>
+#include <deque>
 #include <iterator>
 #include <memory>
 #include <string>
@@ -108,9 +109,23 @@ public:
   /// While set, every change is appended to `log` (nullptr stops logging).
   void set_change_log(std::vector<Change>* log) { log_ = log; }
 
+  // --- undo -----------------------------------------------------------------
+  /// A point to roll back to. While any checkpoint is open, every change is
+  /// recorded; rollback() undoes the changes made since, newest first
+  /// (elements created since are dropped, their ids given out again).
+  using Checkpoint = std::size_t;
+  Checkpoint checkpoint();
+  void rollback(Checkpoint c);
+  /// Closes the checkpoint (and every later one): its changes are kept.
+  void release(Checkpoint c);
+  /// Closes the oldest open checkpoint only, dropping the records that only
+  /// it needed (so a window of recent checkpoints costs bounded memory).
+  void release_oldest();
+
   // --- ids ----------------------------------------------------------------
   /// Drops tombstones and renumbers elements and slots, keeping their order.
-  /// Returns old id -> new id (no_element for removed ones).
+  /// Returns old id -> new id (no_element for removed ones). Not allowed
+  /// while a checkpoint is open.
   std::vector<Id> compact();
 
   /// Checks the invariants listed above; returns the first violation found,
@@ -134,6 +149,17 @@ private:
   };
   void ring_insert(SlotId s);
   void ring_erase(SlotId s);
+  void drop_last_element();
+
+  struct UndoRecord {
+    enum class Kind : std::uint8_t { slot, attribute, created, removed } kind;
+    std::uint32_t where;    ///< slot, or element
+    std::uint32_t old;      ///< previous target (slot) or value (attribute, as bits)
+    AttrId attr;
+  };
+  std::deque<UndoRecord> undo_;
+  std::size_t undo_base_ = 0;     ///< records dropped from the front of undo_
+  std::vector<Checkpoint> open_;  ///< open checkpoints (absolute positions), oldest first
 
   std::shared_ptr<const Schema> schema_;
   std::vector<Element> elements_;

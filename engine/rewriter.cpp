@@ -8,6 +8,8 @@ namespace loom::engine {
 
 namespace {
 
+void apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval);
+
 void merge_into(Graph& g, Match& m, Id from, Id into) {
   if (from == into || from == no_element || into == no_element) return;
   g.redirect_incoming(from, into);
@@ -20,8 +22,22 @@ void merge_into(Graph& g, Match& m, Id from, Id into) {
 
 void apply_rewrite(Graph& g, Match& m, const Actions& actions) {
   const Rule& rule = *m.rule;
-  Matcher eval(g);
+  const Matcher eval(g);
   for (const RewriteOp& op : rule.rewrite) {
+    try {
+      apply_op(g, m, op, actions, eval);
+    } catch (const RuleError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw RuleError(rule.file, op.pos, fmt::format("rule '{}' failed here: {}", rule.name, e.what()));
+    }
+  }
+}
+
+namespace {
+void apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval) {
+  const Rule& rule = *m.rule;
+  {
     switch (op.kind) {
       case RewriteOp::Kind::create: m.elements[op.var] = g.add(op.create_kind); break;
       case RewriteOp::Kind::set_port: {
@@ -60,6 +76,7 @@ void apply_rewrite(Graph& g, Match& m, const Actions& actions) {
     }
   }
 }
+}  // namespace
 
 void check_actions(const Rule& rule, const Actions& actions) {
   for (const RewriteOp& op : rule.rewrite)

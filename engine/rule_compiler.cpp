@@ -4,6 +4,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -67,9 +68,13 @@ public:
     r_.anchor = ast_.anchor ? var(*ast_.anchor, ast_.pos, -1) : 0;
     if (r_.anchor >= r_.pattern_vars) fail(ast_.pos, "the anchor must be a variable of the main pattern");
     r_.may_be_equal.assign(r_.vars.size() + ast_.pattern.counts.size(), std::vector<bool>(r_.vars.size() + ast_.pattern.counts.size(), false));
-    for (const auto& group : ast_.pattern.may_be_equal)
-      for (const auto& a : group)
-        for (const auto& b : group) r_.may_be_equal[var(a, ast_.pattern.pos, -1)][var(b, ast_.pattern.pos, -1)] = true;
+    auto allow = [&](const ast::Pattern& p, int scope) {
+      for (const auto& group : p.may_be_equal)
+        for (const auto& a : group)
+          for (const auto& b : group) r_.may_be_equal[var(a, p.pos, scope)][var(b, p.pos, scope)] = true;
+    };
+    allow(ast_.pattern, -1);
+    for (std::size_t k = 0; k < ast_.pattern.negatives.size(); ++k) allow(ast_.pattern.negatives[k], static_cast<int>(k));
 
     build_main_plan();
     for (std::size_t k = 0; k < ast_.pattern.negatives.size(); ++k) build_negative(static_cast<int>(k));
@@ -117,6 +122,8 @@ private:
       if (v.name != name) continue;
       bool visible = v.nac == -1 || v.nac == scope || (scope == -3 && v.created);
       if (!visible) fail(pos, fmt::format("variable '{}' is not visible here", name));
+      if (v.created && created_.count(static_cast<int>(i)) == 0)
+        fail(pos, fmt::format("'{}' is used before its 'new'", name));
       return static_cast<int>(i);
     }
     fail(pos, fmt::format("unknown variable '{}'", name));
@@ -132,7 +139,7 @@ private:
 
   PortId port(int v, const std::string& name, ast::Pos pos) const {
     if (auto p = schema_.find_port(r_.vars[v].kind, name)) return *p;
-    fail(pos, fmt::format("a {} has no port '{}'", schema_.kind(r_.vars[v].kind).name, name));
+    fail(pos, fmt::format("{} has no port '{}'", article(schema_.kind(r_.vars[v].kind).name), name));
   }
 
   CIndex index(const ast::Index& ix, PortId p, bool explicit_index, ast::Pos pos, bool pattern) {
@@ -201,7 +208,7 @@ private:
             return c;
           }
         auto p = schema_.find_port(k, e.member);
-        if (!p) fail(e.pos, fmt::format("a {} has no attribute or port '{}'", schema_.kind(k).name, e.member));
+        if (!p) fail(e.pos, fmt::format("{} has no attribute or port '{}'", article(schema_.kind(k).name), e.member));
         c.op = C::port;
         c.port = *p;
         CIndex ix = index(e.index, *p, e.op == A::port, e.pos, pattern);
@@ -225,9 +232,9 @@ private:
     c.index = index(inc.index, c.port, inc.indexed, inc.pos, true);
     c.target = inc.target ? var(*inc.target, inc.pos, scope) : -1;
     if (c.target >= 0 && r_.vars[c.target].kind != schema_.port(c.port).target)
-      fail(inc.pos, fmt::format("port '{}' points at a {}, but '{}' is a {}", inc.port,
-                                schema_.kind(schema_.port(c.port).target).name, *inc.target,
-                                schema_.kind(r_.vars[c.target].kind).name));
+      fail(inc.pos, fmt::format("port '{}' points at {}, but '{}' is {}", inc.port,
+                                article(schema_.kind(schema_.port(c.port).target).name), *inc.target,
+                                article(schema_.kind(r_.vars[c.target].kind).name)));
     return c;
   }
   Filter filter(CExpr e) {
@@ -265,7 +272,7 @@ private:
     PendingCount pc;
     KindId k = kind(c.kind, c.pos);
     auto p = schema_.find_port(k, c.port);
-    if (!p) fail(c.pos, fmt::format("a {} has no port '{}'", c.kind, c.port));
+    if (!p) fail(c.pos, fmt::format("{} has no port '{}'", article(c.kind), c.port));
     int target = var(c.target, c.pos, -1);
     if (schema_.port(*p).target != r_.vars[target].kind)
       fail(c.pos, fmt::format("port '{}' does not point at a {}", c.port, schema_.kind(r_.vars[target].kind).name));
@@ -437,6 +444,8 @@ private:
       case S::create:
         for (const auto& n : s.names) {
           op.kind = RewriteOp::Kind::create;
+          for (std::size_t i = 0; i < r_.vars.size(); ++i)
+            if (r_.vars[i].name == n && r_.vars[i].created) created_.insert(static_cast<int>(i));
           op.var = var(n, s.pos, -3);
           op.create_kind = r_.vars[op.var].kind;
           r_.rewrite.push_back(op);
@@ -458,7 +467,7 @@ private:
                                   schema_.kind(ka).name, schema_.kind(kb).name));
         if (!s.kind.empty()) {
           auto a = schema_.find_attribute(ka, s.kind);
-          if (!a) fail(s.pos, fmt::format("a {} has no attribute '{}'", schema_.kind(ka).name, s.kind));
+          if (!a) fail(s.pos, fmt::format("{} has no attribute '{}'", article(schema_.kind(ka).name), s.kind));
           op.attr = *a;
           op.prefer = true;
         }
@@ -482,6 +491,7 @@ private:
           set.port = p;
           set.index.value = static_cast<std::int64_t>(i);
           set.value = expr(s.values[i], -1, -3, false);
+          expect_element(set.value, schema_.port(p).target, s.pos);
           r_.rewrite.push_back(std::move(set));
         }
         return;
@@ -493,12 +503,14 @@ private:
         auto a = s.op == S::set_attribute ? schema_.find_attribute(k, s.member) : std::nullopt;
         op.value = expr(s.values[0], -1, -3, false);
         if (a) {
+          if (yields_element(op.value)) fail(s.pos, fmt::format("attribute '{}' takes a number, not an element", s.member));
           op.kind = RewriteOp::Kind::set_attribute;
           op.attr = *a;
           break;
         }
         op.kind = RewriteOp::Kind::set_port;
         op.port = port(op.var, s.member, s.pos);
+        expect_element(op.value, schema_.port(op.port).target, s.pos);
         CIndex ix = index(s.index, op.port, s.op == S::set_port, s.pos, false);
         if (ix.kind == CIndex::Kind::variable) {
           op.index.op = CExpr::Op::index;
@@ -511,6 +523,21 @@ private:
       }
     }
     r_.rewrite.push_back(std::move(op));
+  }
+
+  static bool yields_element(const CExpr& e) {
+    return e.op == CExpr::Op::element || e.op == CExpr::Op::port || e.op == CExpr::Op::none;
+  }
+  /// A value assigned to a port slot: `none`, or an element of the port's target kind.
+  void expect_element(const CExpr& e, KindId target, ast::Pos pos) const {
+    if (e.op == CExpr::Op::none) return;
+    if (!yields_element(e)) fail(pos, fmt::format("expected {} (or none), found a number", article(schema_.kind(target).name)));
+    KindId k = element_kind(e, pos);
+    if (k != target)
+      fail(pos, fmt::format("expected {}, found {}", article(schema_.kind(target).name), article(schema_.kind(k).name)));
+  }
+  static std::string article(const std::string& noun) {
+    return (noun.find_first_of("aeiou") == 0 ? "an " : "a ") + noun;
   }
 
   /// The kind of element an element expression (a variable or a port slot) yields.
@@ -547,6 +574,7 @@ private:
   Rule r_;
   std::vector<std::pair<int, const ast::Expr*>> where_;
   std::vector<bool> bound_, ibound_, main_ibound_;
+  std::set<int> created_;  ///< `new` variables declared so far in the rewrite
 };
 
 }  // namespace

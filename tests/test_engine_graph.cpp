@@ -99,6 +99,47 @@ TEST_CASE("removal tombstones keep ids; compaction renumbers in order") {
   CHECK(g.check_structure().empty());
 }
 
+TEST_CASE("rollback undoes every change since a checkpoint, nested checkpoints included") {
+  Roads t;
+  Graph g(t.schema);
+  Id a = g.add(t.city), b = g.add(t.city), c = g.add(t.city);
+  Id ab = t.connect(g, a, b);
+  auto dump = [&] {
+    std::ostringstream out;
+    boost::write_graphviz(out, g);
+    for (Id r : g.members(t.road)) out << g.get(r, t.length) << ",";
+    return out.str() + std::to_string(g.size()) + "/" + std::to_string(g.id_bound());
+  };
+  std::string before = dump();
+  auto outer = g.checkpoint();
+  Id bc = t.connect(g, b, c);
+  g.set(ab, t.length, 42);
+  std::string middle = dump();
+  auto inner = g.checkpoint();
+  g.redirect_incoming(b, c);
+  g.remove(a);
+  Id d = g.add(t.city);
+  t.connect(g, d, c);
+  CHECK(g.check_structure().empty());
+  g.rollback(inner);
+  CHECK(g.check_structure().empty());
+  CHECK(dump() == middle);
+  CHECK(g.alive(a));
+  CHECK(g.at(bc, t.ends, 0) == b);
+  g.rollback(outer);
+  CHECK(g.check_structure().empty());
+  CHECK(dump() == before);
+  CHECK(g.id_bound() == 4);
+  // Ids are given out again after a rollback, and the checkpoint stays usable.
+  Id again = g.add(t.city);
+  CHECK(again == 4);
+  g.rollback(outer);
+  CHECK(dump() == before);
+  g.release(outer);
+  g.compact();  // allowed again once every checkpoint is released
+  CHECK(g.check_structure().empty());
+}
+
 TEST_CASE("check_structure reports a kind mismatch") {
   Roads t;
   Graph g(t.schema);

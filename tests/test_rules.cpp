@@ -52,6 +52,14 @@ TEST_CASE("broken rule files fail at load time with file:line:column") {
   CHECK(compile_error("rule r { match { v: node\n f: face\n f.node[2] == w } }") == "bad.rule:3:2: unknown variable 'w'");
   CHECK(compile_error("rule r { match { v: node $ } }") == "bad.rule:1:26: unexpected character '$'");
   CHECK(compile_error("") == "bad.rule:1:1: expected 'rule', found end of file");
+  CHECK(compile_error("rule r { match { f: face } rewrite { f.chord = k\n new k: chord } }") ==
+        "bad.rule:1:48: 'k' is used before its 'new'");
+  CHECK(compile_error("rule r { match { f: face\n v: node } rewrite { f.cell[0] = v } }") ==
+        "bad.rule:2:22: expected a hex, found a node");
+  CHECK(compile_error("rule r { match { f: face } rewrite { f.layer = f } }") ==
+        "bad.rule:1:38: attribute 'layer' takes a number, not an element");
+  CHECK(compile_error("rule r { match { f: face\n e: edge\n f.node[0] == e } }") ==
+        "bad.rule:3:2: port 'node' points at a node, but 'e' is an edge");
 }
 
 TEST_CASE("an unknown action is reported when the engine is built") {
@@ -84,7 +92,6 @@ TEST_CASE("the anchored matcher and VF2 find the same matches for every shipped 
         return true;
       });
       CHECK(anchored == reference);
-      MESSAGE(rule.name << " after " << steps << ": " << anchored.size() << " matches");
       if (rule.name == "cross" && steps == 0) CHECK(anchored.size() == 8 * 3);  // 8 corners, 3 rotations
     }
   }
@@ -157,6 +164,25 @@ TEST_CASE("loom weave fails cleanly without the seam rule, and on a broken rule 
 
   r = run_cli("rules explain " + (dir / "broken.rule").string());
   CHECK(r.status == 2);
+  std::filesystem::remove(dir / "broken.rule");
+
+  write(dir / "action.rule", "rule act {\n  match { v: node }\n  rewrite { call frobnicate(v) }\n}\n");
+  r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --rules " +
+              dir.path().string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("action.rule:3:13: expected a known action, found 'frobnicate'") != std::string::npos);
+  std::filesystem::remove(dir / "action.rule");
+
+  r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --rules " +
+              dir.path().string() + " --strategy sequence:cross,nosuch");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("no rule 'nosuch' is loaded") != std::string::npos);
+
+  // An output format loom cannot write is refused before any work or any other file.
+  r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.obj").string() + " --report " +
+              (dir / "r.json").string());
+  CHECK(r.status == 2);
+  CHECK_FALSE(std::filesystem::exists(dir / "r.json"));
   r = run_cli("rules explain " + (dir / "cross.rule").string());
   CHECK(r.status == 0);
   CHECK(r.out.find("anchored at v") != std::string::npos);

@@ -19,13 +19,20 @@ namespace {
 std::vector<loom::engine::Rule> load(const std::string& path) {
   const auto& schema = *loom::stc::StcSchema::get().schema;
   try {
-    if (path.empty()) return loom::engine::load_rule_dir(loom::weave::default_rules_dir(), schema);
-    if (std::filesystem::is_directory(path)) return loom::engine::load_rule_dir(path, schema);
-    std::ifstream in(path);
-    if (!in) throw loom::InputError(path + ": cannot read the rule file; check the path");
-    std::stringstream text;
-    text << in.rdbuf();
-    return loom::engine::compile_rules(text.str(), path, schema);
+    std::vector<loom::engine::Rule> rules;
+    if (path.empty() || std::filesystem::is_directory(path)) {
+      rules = loom::engine::load_rule_dir(path.empty() ? loom::weave::default_rules_dir() : std::filesystem::path(path), schema);
+    } else {
+      std::ifstream in(path);
+      if (!in) throw loom::InputError(path + ": cannot read the rule file; check the path");
+      std::stringstream text;
+      text << in.rdbuf();
+      rules = loom::engine::compile_rules(text.str(), path, schema);
+    }
+    loom::stc::Stc scratch;
+    auto actions = loom::weave::weave_actions(scratch);
+    for (const auto& r : rules) loom::engine::check_actions(r, actions);
+    return rules;
   } catch (const loom::engine::RuleError& e) {
     throw loom::InputError(std::string(e.what()) + "; fix the rule file (grammar: docs/rules.md)");
   }

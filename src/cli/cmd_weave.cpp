@@ -2,6 +2,7 @@
 // mesh out. Exit 0: closed, valid, every scaled Jacobian > 0; 3: closed and
 // combinatorially valid but some scaled Jacobian <= 0 (written anyway); 1: not
 // closed or not valid (nothing written); 2: bad input or usage.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "engine/rule_parser.hpp"
 #include "src/cli/command.hpp"
 #include "src/io/hex_io.hpp"
+#include "src/io/mesh_format.hpp"
 #include "src/io/surface_io.hpp"
 #include "src/mesh/surface_validation.hpp"
 #include "src/stc/primal.hpp"
@@ -32,22 +34,36 @@ struct Options {
   bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false;
 };
 
+/// A broken rule is bad input: one line naming file:line:column.
+loom::InputError rule_error(const loom::engine::RuleError& e) {
+  return loom::InputError(e.pos.line > 0 ? std::string(e.what()) + "; fix the rule file (grammar: docs/rules.md)"
+                                         : std::string(e.what()));
+}
+
 std::vector<loom::engine::Rule> load_rules(const std::string& dir) {
   try {
-    return loom::engine::load_rule_dir(dir, *loom::stc::StcSchema::get().schema);
+    auto rules = loom::engine::load_rule_dir(dir, *loom::stc::StcSchema::get().schema);
+    loom::stc::Stc scratch;
+    auto actions = loom::weave::weave_actions(scratch);
+    for (const auto& r : rules) loom::engine::check_actions(r, actions);
+    return rules;
   } catch (const loom::engine::RuleError& e) {
-    throw loom::InputError(std::string(e.what()) + "; fix the rule file or pass another --rules DIR");
+    throw rule_error(e);
   }
 }
 
-loom::engine::Strategy parse_strategy(const Options& o) {
+loom::engine::Strategy parse_strategy(const Options& o, const std::vector<loom::engine::Rule>& rules) {
+  loom::engine::Strategy s;
   try {
-    auto s = loom::engine::Strategy::parse(o.strategy);
-    if (o.seed_given) s.seed = o.seed;
-    return s;
+    s = loom::engine::Strategy::parse(o.strategy);
   } catch (const std::invalid_argument& e) {
     throw loom::InputError(e.what());
   }
+  if (o.seed_given) s.seed = o.seed;
+  for (const auto& name : s.order)
+    if (std::none_of(rules.begin(), rules.end(), [&](const auto& r) { return r.name == name; }))
+      throw loom::InputError(fmt::format("--strategy {}: no rule '{}' is loaded; see 'loom rules list'", o.strategy, name));
+  return s;
 }
 
 /// One line per application: step, rule, anchor, then variable=element.
@@ -58,11 +74,12 @@ std::string trace_line(const loom::engine::Application& a) {
   return line + "\n";
 }
 
-nlohmann::json report_json(const Options& o, const loom::weave::MeshingResult& r, const std::string& strategy) {
+nlohmann::json report_json(const Options& o, const loom::weave::MeshingResult& r, const loom::engine::Strategy& strategy) {
   nlohmann::json j;
   j["input"] = o.surface;
-  j["strategy"] = strategy;
-  j["seed"] = o.seed;
+  j["strategy"] = strategy.name();
+  j["seed"] = strategy.seed;
+  j["backtracks"] = r.weave.backtracks;
   j["closed"] = r.weave.closed;
   j["steps"] = r.weave.steps;
   j["rule_applications"] = r.weave.applications;
@@ -99,11 +116,12 @@ void write_partial(const std::filesystem::path& output, const loom::stc::Stc& st
 }
 
 int run(const Options& o) {
+  loom::hex_format_of(o.output);  // an unwritable format is refused before any work
   loom::QuadSurface surface = loom::read_surface(o.surface);
   loom::validate_surface(surface, o.surface, {.weld = o.weld});
   auto rules = load_rules(o.rules.empty() ? loom::weave::default_rules_dir().string() : o.rules);
   loom::weave::WeaveOptions options;
-  options.strategy = parse_strategy(o);
+  options.strategy = parse_strategy(o, rules);
 
   std::string trace;
   std::optional<loom::weave::StepDumper> steps;
@@ -119,13 +137,18 @@ int run(const Options& o) {
     }
   };
 
-  auto result = loom::weave::mesh_surface(surface, std::move(rules), options);
+  loom::weave::MeshingResult result;
+  try {
+    result = loom::weave::mesh_surface(surface, std::move(rules), options);
+  } catch (const loom::engine::RuleError& e) {
+    throw rule_error(e);
+  }
   if (progress) std::cerr << "\r" << std::string(60, ' ') << "\r";
 
   // Diagnostics describe the run whatever its outcome; the mesh is written only on success.
   if (!o.trace.empty()) loom::write_text_atomically(o.trace, trace);
   if (!o.report.empty())
-    loom::write_text_atomically(o.report, report_json(o, result, options.strategy.name()).dump(2) + "\n");
+    loom::write_text_atomically(o.report, report_json(o, result, options.strategy).dump(2) + "\n");
   if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir);
 
   if (!result.weave.closed) {
@@ -144,8 +167,9 @@ int run(const Options& o) {
   const auto& q = result.check->quality;
   std::string counts;
   for (const auto& [rule, n] : result.weave.applications) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", rule, n);
-  std::cout << fmt::format("woven: {} hexes in {} steps ({}); min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
-                           result.mesh->hexes.size(), result.weave.steps, counts, q.min_scaled_jacobian,
+  std::cout << fmt::format("woven: {} hex{} in {} steps ({}); min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
+                           result.mesh->hexes.size(), result.mesh->hexes.size() == 1 ? "" : "es", result.weave.steps,
+                           counts, q.min_scaled_jacobian,
                            q.mean_scaled_jacobian, o.output);
   if (q.below_zero > 0) {
     std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}); the mesh is written "

@@ -50,6 +50,13 @@ public:
          << "node [fontsize=9, width=0.25, height=0.25, fixedsize=true];\nedge [fontsize=8];\n";
     write_loops();
     write_chords();
+    // Hexes are free to move, but each is tied to the loop's centre by an
+    // invisible spring, so that a weave in progress is drawn inside its loop.
+    if (!declared_.empty()) {
+      out_ << "centre [shape=point, style=invis, pos=\"0,0!\"];\n";
+      for (const auto& id : declared_order_)
+        out_ << "centre -- " << id << fmt::format(" [style=invis, len={:.2f}, weight=0.5];\n", 0.5 * radius_);
+    }
     out_ << "}\n";
     return out_.str();
   }
@@ -59,7 +66,7 @@ private:
     double radius = 1.0;
     for (const Loop& loop : loops_) {
       std::size_t n = loop.faces.size();
-      if (radius == 1.0) radius = std::max(1.5, 0.9 * static_cast<double>(n) / (2 * std::numbers::pi));
+      if (radius == 1.0) radius_ = radius = std::max(1.5, 0.9 * static_cast<double>(n) / (2 * std::numbers::pi));
       for (std::size_t i = 0; i < n; ++i) {
         double angle = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n);
         Id f = loop.faces[i];
@@ -99,8 +106,10 @@ private:
     Id h = stc_.face_cell(f, side);
     if (h != no_element) {
       std::string id = fmt::format("H{}a{}", h, edge_axis(stc_, h, f, k));
-      if (declared_.insert(id).second)
+      if (declared_.insert(id).second) {
+        declared_order_.push_back(id);
         out_ << id << " [shape=circle, label=" << dot_quote(std::to_string(hex_ordinal_.at(h))) << "];\n";
+      }
       return id;
     }
     if (side == 1 && stc_.is_boundary(f)) return loop_point(f, k);
@@ -109,6 +118,8 @@ private:
     out_ << id << " [shape=point, width=0.05, color=\"#888888\"";
     if (auto it = whisker_pos_.find(loop_point(f, k)); it != whisker_pos_.end() && stc_.is_boundary(f))
       out_ << ", pos=\"" << it->second << "\"";
+    else
+      declared_order_.push_back(id);  // an open end inside: pulled towards the centre too
     out_ << "];\n";
     return id;
   }
@@ -118,6 +129,8 @@ private:
   const std::vector<Loop>& loops_;
   std::unordered_map<Id, std::size_t> sheet_ordinal_, hex_ordinal_;
   std::unordered_set<std::string> declared_;
+  std::vector<std::string> declared_order_;
+  double radius_ = 1.5;  ///< of the outer loop
   std::unordered_map<std::string, std::string> whisker_pos_;  ///< loop point -> pinned whisker end
   std::ostringstream out_;
 };

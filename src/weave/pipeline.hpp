@@ -26,7 +26,8 @@ struct MeshingResult {
   bool combinatorially_valid() const { return mesh && check && check->combinatorial_valid(); }
 };
 
-/// Weaves a validated, outward-oriented surface with `rules`.
+/// Weaves a validated, outward-oriented surface with `rules`. A rule that
+/// fails while it runs throws engine::RuleError naming its file and line.
 MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const WeaveOptions& options);
 
 }  // namespace loom::weave

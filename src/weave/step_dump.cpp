@@ -32,27 +32,28 @@ void StepDumper::dump(const engine::Application& step, const stc::Stc& stc) {
   const auto& ids = stc.ids();
   engine::DotStyle style;
   style.graph_name = fmt::format("step {}: {}", step.step, step.rule->name);
+  style.layout = "neato";
   std::set<engine::Id> touched;
   for (const engine::Match* m : {&step.matched, &step.result})
     for (engine::Id e : m->elements)
       if (e != engine::no_element && g.alive(e)) touched.insert(e);
   std::set<engine::Id> sheets;
+  // Only what the step matched and made: a whole neighbourhood is unreadable.
   for (engine::Id e : touched) {
     style.highlight.insert(e);
     style.only.insert(e);
     if (g.kind(e) == ids.edge) sheets.insert(stc.edge_sheet(e));
-    // Neighbours drawn for context, but not the sheets and chords (they reach far).
-    for (engine::SlotId s = g.first_slot(e), end = s + g.slot_count(e); s < end; ++s)
-      if (engine::Id t = g.slot_target(s); t != engine::no_element && g.kind(t) != ids.sheet && g.kind(t) != ids.chord)
-        style.only.insert(t);
   }
   std::ostringstream dot;
   engine::write_dot(dot, g, style);
   std::string stem = fmt::format("step-{:04}-{}", step.step, step.rule->name);
   emit(stem, dot.str());
-  for (engine::Id sheet : sheets)
-    if (sheet != engine::no_element && g.alive(sheet))
-      emit(fmt::format("step-{:04}-sheet-{}", step.step, sheet), stc::sheet_diagram_dot(stc, sheet));
+  // Sheets are named by rank, as in `loom stc` and the final diagrams.
+  std::size_t rank = 0;
+  for (engine::Id sheet : g.members(ids.sheet)) {
+    if (sheets.count(sheet)) emit(fmt::format("step-{:04}-sheet-{}", step.step, rank), stc::sheet_diagram_dot(stc, sheet));
+    ++rank;
+  }
 }
 
 }  // namespace loom::weave

@@ -1,7 +1,7 @@
 #pragma once
 // Pictures of a weave, step by step (`loom weave --dot-steps`): for every rule
-// application, the matched elements and their neighbours with the match
-// highlighted, and the diagram of every sheet the step touched.
+// application, the elements it matched and made, and the diagram of every
+// sheet the step touched.
 #include <filesystem>
 
 #include "engine/engine.hpp"
@@ -13,7 +13,8 @@ class StepDumper {
 public:
   /// Writes into `dir` (created if needed); SVG too when `svg`.
   StepDumper(std::filesystem::path dir, bool svg);
-  /// step-NNNN-RULE.dot and step-NNNN-sheet-S.dot (S: the sheet's element id).
+  /// step-NNNN-RULE.dot (the elements matched and made, highlighted) and
+  /// step-NNNN-sheet-K.dot (K: the sheet's rank, as in `loom stc`).
   void dump(const engine::Application& step, const stc::Stc& stc);
   std::size_t files_written() const { return files_; }
 

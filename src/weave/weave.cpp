@@ -1,6 +1,8 @@
 #include "src/weave/weave.hpp"
 
 #include <cstdlib>
+#include <deque>
+#include <stdexcept>
 #include <map>
 
 #include <fmt/format.h>
@@ -18,7 +20,11 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // v, whose edges from v run to a, b and c: n = a + b + c - 2v.
   actions.add("place_hex_corner", [&stc](engine::Graph& g, std::span<const engine::Id> args) {
     const auto& ids = stc.ids();
-    auto at = [&](engine::Id node) { return stc.points().at(static_cast<std::size_t>(g.get(node, ids.node_point))); };
+    auto at = [&](engine::Id node) {
+      std::int32_t p = g.get(node, ids.node_point);
+      if (p < 0) throw std::runtime_error(fmt::format("place_hex_corner: node {} has no position yet", node));
+      return stc.points()[static_cast<std::size_t>(p)];
+    };
     Vec3 v = at(args[1]);
     Vec3 n = at(args[2]) + at(args[3]) + at(args[4]) - 2.0 * v;
     g.set(args[0], ids.node_point, static_cast<std::int32_t>(stc.points().size()));
@@ -45,14 +51,69 @@ std::string describe_left(const stc::Stc& stc) {
 
 }  // namespace
 
+namespace {
+
+/// A step the strategy chose, and the graph before it: on a dead end the
+/// step is undone and the next-best match at that point is taken instead.
+struct Choice {
+  engine::Graph::Checkpoint before;
+  std::size_t taken = 0;  ///< rank of the match applied (0: the strategy's first)
+};
+
+}  // namespace
+
 WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOptions& options) {
   WeaveResult result;
   std::size_t limit = options.max_steps ? options.max_steps : 200 * stc.faces() + 10000;
   engine::Engine eng(stc.graph(), std::move(rules), weave_actions(stc), options.strategy);
   engine::Application app;
-  while (eng.counters().steps < limit && eng.step(&app)) {
+  std::deque<Choice> choices;
+  const bool backtracking = options.max_backtracks > 0 && options.branching > 1 && options.backtrack_window > 0;
+  auto after = [&] {
     stc.debug_check();
     if (options.after_step) options.after_step(app, stc);
+  };
+  // Alternatives are looked for only on a dead end, so a weave that never
+  // gets stuck pays one checkpoint a step and nothing else.
+  auto backtrack = [&] {
+    while (!choices.empty() && result.backtracks < options.max_backtracks) {
+      Choice& c = choices.back();
+      eng.undo(c.before);
+      if (c.taken + 1 < options.branching) {
+        auto alternatives = eng.choices(c.taken + 2);
+        if (alternatives.size() > c.taken + 1) {
+          ++result.backtracks;
+          eng.apply(std::move(alternatives[++c.taken]), &app);
+          after();
+          return true;
+        }
+      }
+      eng.release(c.before);
+      choices.pop_back();
+    }
+    return false;
+  };
+  while (eng.counters().steps < limit) {
+    if (backtracking) {
+      choices.push_back({eng.mark(), 0});
+      if (choices.size() > options.backtrack_window) {
+        stc.graph().release_oldest();
+        choices.pop_front();
+      }
+    }
+    if (eng.step(&app)) {
+      after();
+      continue;
+    }
+    if (backtracking) {
+      eng.release(choices.back().before);
+      choices.pop_back();
+    }
+    if (stc.whiskers() == 0 || !backtracking || !backtrack()) break;
+  }
+  while (!choices.empty()) {
+    eng.release(choices.front().before);
+    choices.pop_front();
   }
   result.steps = eng.counters().steps;
   result.step_limit_hit = result.steps >= limit;
@@ -62,6 +123,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   result.closed = result.whiskers_left == 0 && stc.hexes() > 0;
   if (!result.closed) {
     result.left = describe_left(stc);
+    if (result.backtracks) result.left += fmt::format(" after {} backtracks", result.backtracks);
     if (result.step_limit_hit) result.left += fmt::format(" (stopped after {} applications)", result.steps);
   }
   return result;

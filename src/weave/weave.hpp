@@ -19,6 +19,12 @@ struct WeaveOptions {
   engine::Strategy strategy;
   /// Stop after this many applications (0: 200 per initial face plus 10,000).
   std::size_t max_steps = 0;
+  /// When no rule applies and whiskers are left, go back to the latest of
+  /// the last `backtrack_window` choices that had alternatives and take the
+  /// next one (at most `branching` alternatives a choice, `max_backtracks` in all).
+  std::size_t max_backtracks = 200;
+  std::size_t branching = 3;
+  std::size_t backtrack_window = 64;
   /// Called after every application (trace, pictures, progress).
   std::function<void(const engine::Application&, const stc::Stc&)> after_step;
 };
@@ -28,6 +34,7 @@ struct WeaveResult {
   bool step_limit_hit = false;
   std::size_t steps = 0;
   std::size_t whiskers_left = 0;
+  std::size_t backtracks = 0;       ///< choices undone to try another
   std::map<std::string, std::size_t> applications;  ///< by rule name
   engine::EngineCounters counters;
   /// One line saying what is left when the weave did not close.
