@@ -69,24 +69,30 @@ bool Engine::step(Application* applied) {
   return false;
 }
 
-bool Engine::try_rule_queue(std::size_t r, Application* applied) {
+bool Engine::pop_best(std::size_t r, Entry& entry, Match& m) {
   const Rule& rule = rules_[r];
   auto& queue = state_[r].queue;
   while (!queue.empty()) {
-    Entry top = queue.top();
+    entry = queue.top();
     queue.pop();
-    Match m;
     ++counters_.match_attempts;
-    if (!g_.alive(top.anchor) || !matcher_.first_at(rule, top.anchor, m)) continue;
+    if (!g_.alive(entry.anchor) || !matcher_.first_at(rule, entry.anchor, m)) continue;
     std::int64_t key = rule.order ? matcher_.evaluate(*rule.order, m) : 0;
-    if (key > top.key) {  // its key grew since it was queued: take its new place
-      queue.push({key, top.anchor});
+    if (key > entry.key) {  // its key grew since it was queued: take its new place
+      queue.push({key, entry.anchor});
       continue;
     }
-    apply_rule(r, m, applied);
     return true;
   }
   return false;
+}
+
+bool Engine::try_rule_queue(std::size_t r, Application* applied) {
+  Entry entry;
+  Match m;
+  if (!pop_best(r, entry, m)) return false;
+  apply_rule(r, m, applied);
+  return true;
 }
 
 bool Engine::try_random_tier(const std::vector<std::size_t>& tier, Application* applied) {
@@ -139,24 +145,15 @@ std::vector<Match> Engine::choices(std::size_t limit) {
         }
         continue;
       }
-      auto& queue = state_[r].queue;
       std::vector<Entry> keep;
-      while (!queue.empty() && out.size() < limit) {
-        Entry top = queue.top();
-        queue.pop();
-        Match m;
-        ++counters_.match_attempts;
-        if (!g_.alive(top.anchor) || !matcher_.first_at(rule, top.anchor, m)) continue;
-        std::int64_t key = rule.order ? matcher_.evaluate(*rule.order, m) : 0;
-        if (key > top.key) {
-          queue.push({key, top.anchor});
-          continue;
-        }
-        bool seen = std::any_of(keep.begin(), keep.end(), [&](const Entry& e) { return e.anchor == top.anchor; });
-        keep.push_back(top);
-        if (!seen) out.push_back(std::move(m));
+      Entry entry;
+      Match m;
+      while (out.size() < limit && pop_best(r, entry, m)) {
+        bool seen = std::any_of(keep.begin(), keep.end(), [&](const Entry& e) { return e.anchor == entry.anchor; });
+        keep.push_back(entry);
+        if (!seen) out.push_back(m);
       }
-      for (const Entry& e : keep) queue.push(e);
+      for (const Entry& e : keep) state_[r].queue.push(e);
     }
     if (!out.empty()) return out;
   }

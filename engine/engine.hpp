@@ -87,6 +87,8 @@ private:
   void offer(std::size_t rule, Id anchor);
   void process_changes();
   void trace(const Rule& rule, int var, Id element, std::vector<Id>& anchors);
+  /// Pops candidates of `rule` until one still matches with an up-to-date key.
+  bool pop_best(std::size_t rule, Entry& entry, Match& m);
   bool try_rule_queue(std::size_t rule, Application* applied);
   bool try_random_tier(const std::vector<std::size_t>& tier, Application* applied);
   void apply_rule(std::size_t rule, Match& m, Application* applied);

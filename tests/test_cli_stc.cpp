@@ -61,6 +61,11 @@ TEST_CASE("loom stc reports the loops of a surface") {
     CHECK(crossing == 8);
     auto text = run_cli("stc " + (dir / "pyr.off").string());
     CHECK(text.out.find("crosses itself in 8 quads") != std::string::npos);
+    CHECK(j["genus"] == 0);
+  }
+  SUBCASE("a torus has genus 1") {
+    REQUIRE(run_cli("gen torus 4 6 -o " + (dir / "torus.vtk").string()).status == 0);
+    CHECK(stc_json(dir / "torus.vtk")["genus"] == 1);
   }
 }
 

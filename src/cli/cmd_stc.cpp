@@ -25,9 +25,10 @@ int run(const Options& o) {
   auto mesh = loom::read_surface_or_hex_mesh(o.mesh);
   bool surface = std::holds_alternative<loom::QuadSurface>(mesh);
   loom::stc::Stc stc;
+  loom::SurfaceSummary checked;
   if (surface) {
     auto& s = std::get<loom::QuadSurface>(mesh);
-    loom::validate_surface(s, o.mesh, {.weld = o.weld});
+    checked = loom::validate_surface(s, o.mesh, {.weld = o.weld});
     stc = loom::stc::build_from_surface(s);
   } else {
     stc = loom::stc::build_from_hex_mesh(std::get<loom::HexMesh>(mesh));
@@ -37,9 +38,11 @@ int run(const Options& o) {
   if (o.json) {
     auto j = loom::stc::to_json(summary);
     j["input"] = surface ? "surface" : "hex mesh";
+    if (surface) j["genus"] = checked.genus;
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << loom::stc::to_text(summary, surface);
+    if (surface) std::cout << fmt::format("genus {}\n", checked.genus);
     if (files) std::cout << fmt::format("wrote {} DOT/SVG files to {}\n", files, o.dot_dir);
   }
   return 0;

@@ -7,9 +7,13 @@
 #include <string_view>
 
 #include "src/io/cell_table.hpp"
+#include "src/io/mesh_format.hpp"
 #include "src/io/raw_mesh.hpp"
 
 namespace loom {
+
+/// Reads `file` in `format` into a RawMesh (the one place formats are dispatched).
+RawMesh read_raw_mesh(const std::filesystem::path& file, MeshFormat format);
 
 RawMesh parse_obj(std::string_view text, const std::string& where);
 std::string obj_text(const QuadSurface& surface);

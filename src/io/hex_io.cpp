@@ -2,25 +2,12 @@
 
 #include "src/io/formats.hpp"
 #include "src/io/mesh_format.hpp"
-#include "src/io/text_scanner.hpp"
 #include "src/util/atomic_file.hpp"
 
 namespace loom {
 
 HexMesh read_hex_mesh(const std::filesystem::path& file) {
-  const std::string where = file.string();
-  switch (hex_format_of(file)) {
-    case MeshFormat::vtk:
-      return to_hex_mesh(parse_legacy_vtk(read_input_file(file), where), where);
-    case MeshFormat::vtu:
-      return to_hex_mesh(parse_vtu(read_input_file(file), where), where);
-    case MeshFormat::msh:
-      return to_hex_mesh(read_msh(file), where);
-    case MeshFormat::obj:
-    case MeshFormat::off:
-      break;  // refused by hex_format_of
-  }
-  return {};
+  return to_hex_mesh(read_raw_mesh(file, hex_format_of(file)), file.string());
 }
 
 void write_hex_mesh(const std::filesystem::path& file, const HexMesh& mesh) {

@@ -1,0 +1,18 @@
+#include "src/io/formats.hpp"
+#include "src/io/text_scanner.hpp"
+
+namespace loom {
+
+RawMesh read_raw_mesh(const std::filesystem::path& file, MeshFormat format) {
+  const std::string where = file.string();
+  switch (format) {
+    case MeshFormat::obj: return parse_obj(read_input_file(file), where);
+    case MeshFormat::off: return parse_off(read_input_file(file), where);
+    case MeshFormat::vtk: return parse_legacy_vtk(read_input_file(file), where);
+    case MeshFormat::vtu: return parse_vtu(read_input_file(file), where);
+    case MeshFormat::msh: return read_msh(file);
+  }
+  return {};
+}
+
+}  // namespace loom
