@@ -82,11 +82,17 @@ private:
     std::vector<bool> pooled;
     bool enabled = true;
     std::int64_t rank = 0;  ///< higher first
+    std::vector<std::vector<int>> relevant;  ///< relevance_key -> variables
   };
 
   void offer(std::size_t rule, Id anchor);
+  void index_relevance();
+  std::size_t relevance_key(KindId kind, int change, std::size_t which) const {
+    return (static_cast<std::size_t>(kind) * 3 + static_cast<std::size_t>(change)) * width_ + which;
+  }
   void process_changes();
-  void trace(const Rule& rule, int var, Id element, std::vector<Id>& anchors);
+  /// Adds to anchors_ the anchors whose match may involve `element` as `var`.
+  void trace(const Rule& rule, int var, Id element);
   /// Pops candidates of `rule` until one still matches with an up-to-date key.
   bool pop_best(std::size_t rule, Entry& entry, Match& m);
   bool try_rule_queue(std::size_t rule, Application* applied);
@@ -102,6 +108,11 @@ private:
   std::vector<RuleState> state_;
   std::vector<std::vector<std::size_t>> tiers_;  ///< rule indices, highest rank first
   std::vector<Graph::Change> log_;
+  std::size_t width_ = 1;
+  // Scratch space reused from step to step.
+  Match scratch_;
+  std::vector<Id> anchors_, current_, next_;
+  std::vector<std::pair<int, Id>> seeds_;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t stamp_now_ = 0;
   std::mt19937_64 rng_;

@@ -92,11 +92,6 @@ void Graph::ring_erase(SlotId s) {
   --elements_[sl.target].in_count;
 }
 
-PortId Graph::slot_port(SlotId s) const {
-  const Slot& sl = slots_[s];
-  return schema_->port_of_slot(elements_[sl.owner].kind, s - elements_[sl.owner].first_slot);
-}
-
 unsigned Graph::slot_index(SlotId s) const {
   return s - elements_[slots_[s].owner].first_slot - schema_->port(slot_port(s)).first_slot;
 }

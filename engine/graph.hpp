@@ -72,7 +72,10 @@ public:
   Id slot_target(SlotId s) const { return slots_[s].target; }
   SlotId slot_bound() const { return static_cast<SlotId>(slots_.size()); }
   /// The port a slot belongs to, and its index within the port.
-  PortId slot_port(SlotId s) const;
+  PortId slot_port(SlotId s) const {
+    const Element& owner = elements_[slots_[s].owner];
+    return schema_->port_of_slot(owner.kind, s - owner.first_slot);
+  }
   unsigned slot_index(SlotId s) const;
 
   // --- incoming incidences ------------------------------------------------

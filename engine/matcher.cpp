@@ -74,12 +74,8 @@ struct Matcher::Search {
   bool bind(int v, Id e) {
     const Variable& var = rule.vars[v];
     if (e == no_element || !g.alive(e) || g.kind(e) != var.kind) return false;
-    for (int u = 0; u < static_cast<int>(rule.vars.size()); ++u) {
-      const Variable& other = rule.vars[u];
-      if (u == v || m.elements[u] != e || other.kind != var.kind || other.created || other.nac == -2) continue;
-      bool same_scope = other.nac == -1 || other.nac == var.nac;
-      if (same_scope && !rule.may_be_equal[u][v]) return false;
-    }
+    for (int u : rule.distinct[v])
+      if (m.elements[u] == e) return false;
     m.elements[v] = e;
     return true;
   }
@@ -171,17 +167,21 @@ struct Matcher::Search {
       case PlanOp::Kind::filter:
         return matcher.evaluate(*op.expr, m) != 0 && step(ops, k + 1, done);
       case PlanOp::Kind::count: {
-        std::vector<Id> owners;
-        for (SlotId s : g.incoming(m.elements[op.target])) {
-          if (g.slot_port(s) != op.port) continue;
-          Id o = g.slot_owner(s);
-          if (std::find(owners.begin(), owners.end(), o) != owners.end()) continue;
+        std::int64_t counted = 0;
+        auto ring = g.incoming(m.elements[op.target]);
+        for (auto it = ring.begin(); it != ring.end(); ++it) {
+          if (g.slot_port(*it) != op.port) continue;
+          Id o = g.slot_owner(*it);
+          // Distinct owners: skip an owner already met earlier in the ring.
+          bool again = false;
+          for (auto before = ring.begin(); before != it && !again; ++before)
+            again = g.slot_owner(*before) == o && g.slot_port(*before) == op.port;
+          if (again) continue;
           m.elements[op.owner] = o;
-          bool counted = !op.expr || matcher.evaluate(*op.expr, m) != 0;
+          counted += !op.expr || matcher.evaluate(*op.expr, m) != 0;
           m.elements[op.owner] = no_element;
-          if (counted) owners.push_back(o);
         }
-        return compare(op.comparison, static_cast<std::int64_t>(owners.size()), op.bound) && step(ops, k + 1, done);
+        return compare(op.comparison, counted, op.bound) && step(ops, k + 1, done);
       }
       case PlanOp::Kind::negative: {
         bool exists = step(rule.negatives[op.nac].ops, 0, [] { return true; });
@@ -193,7 +193,7 @@ struct Matcher::Search {
 };
 
 void Matcher::each_at(const Rule& rule, Id anchor, const std::function<bool(const Match&)>& visit) const {
-  Match m;
+  Match& m = scratch_;  // reused: no allocation per search
   m.rule = &rule;
   m.elements.assign(rule.vars.size(), no_element);
   m.indices.assign(rule.index_vars.size(), -1);

@@ -24,7 +24,8 @@ public:
 
   /// The first match whose anchor is `anchor`, in plan order.
   bool first_at(const Rule& rule, Id anchor, Match& out) const;
-  /// Every match anchored at `anchor`; `visit` returns false to stop.
+  /// Every match anchored at `anchor`; `visit` returns false to stop. The
+  /// match passed to `visit` is only valid during the call (not re-entrant).
   void each_at(const Rule& rule, Id anchor, const std::function<bool(const Match&)>& visit) const;
   /// Every match in the graph (anchors in id order); `visit` returns false to stop.
   void each(const Rule& rule, const std::function<bool(const Match&)>& visit) const;
@@ -35,6 +36,7 @@ public:
 private:
   struct Search;
   const Graph& g_;
+  mutable Match scratch_;
 };
 
 }  // namespace loom::engine

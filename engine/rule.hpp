@@ -113,6 +113,9 @@ struct Rule {
   int anchor = 0;
   int pattern_vars = 0;                  ///< number of main-pattern variables
   std::vector<std::vector<bool>> may_be_equal;  ///< [var][var]
+  /// For each variable, the variables it may not be bound to the same element
+  /// as: same kind, same scope (a negative pattern sees the main one), no hom().
+  std::vector<std::vector<int>> distinct;
   std::vector<PlanOp> plan;              ///< after the anchor is bound
   std::vector<NegativePlan> negatives;
   std::vector<CountWatch> count_watches;

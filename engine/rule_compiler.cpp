@@ -81,6 +81,7 @@ public:
     if (ast_.order) r_.order = expr(*ast_.order, -1, -1, false);
     for (const auto& s : ast_.rewrite) statement(s);
     record_sensitivity();
+    record_distinctness();
     return std::move(r_);
   }
 
@@ -337,6 +338,29 @@ private:
     r_.negatives.push_back(std::move(nac));
   }
 
+  /// A condition `x.port[i] == y` or `x.port[i] == none` is a plain slot check,
+  /// cheaper than evaluating an expression; anything else stays a filter.
+  static PlanOp filter_op(const CExpr& e) {
+    PlanOp op;
+    if (e.op == CExpr::Op::eq && e.args.size() == 2) {
+      const CExpr *slot = &e.args[0], *other = &e.args[1];
+      if (other->op == CExpr::Op::port) std::swap(slot, other);
+      if (slot->op == CExpr::Op::port && (other->op == CExpr::Op::none || other->op == CExpr::Op::element)) {
+        op.kind = PlanOp::Kind::check;
+        op.owner = slot->var;
+        op.port = slot->port;
+        op.index.kind = slot->index_var >= 0 ? CIndex::Kind::variable : CIndex::Kind::fixed;
+        op.index.variable = slot->index_var;
+        op.index.offset = slot->offset;
+        op.target = other->op == CExpr::Op::none ? -1 : other->var;
+        return op;
+      }
+    }
+    op.kind = PlanOp::Kind::filter;
+    op.expr = e;
+    return op;
+  }
+
   static PlanOp edge_op(PlanOp::Kind kind, const Incidence& inc) {
     PlanOp op;
     op.kind = kind;
@@ -371,10 +395,7 @@ private:
           }
         for (auto& f : filters)
           if (!f.used && all_bound(f.vars, f.index_vars)) {
-            PlanOp op;
-            op.kind = PlanOp::Kind::filter;
-            op.expr = f.expr;
-            ops.push_back(op);
+            ops.push_back(filter_op(f.expr));
             f.used = progress = true;
           }
         for (auto& c : counts)
@@ -545,6 +566,17 @@ private:
     if (e.op == CExpr::Op::element) return r_.vars[e.var].kind;
     if (e.op == CExpr::Op::port) return schema_.port(e.port).target;
     fail(pos, "expected an element: a variable or x.port[i]");
+  }
+
+  void record_distinctness() {
+    r_.distinct.assign(r_.vars.size(), {});
+    for (std::size_t v = 0; v < r_.vars.size(); ++v)
+      for (std::size_t u = 0; u < r_.vars.size(); ++u) {
+        const Variable &a = r_.vars[v], &b = r_.vars[u];
+        if (u == v || a.kind != b.kind || a.created || b.created || a.nac == -2 || b.nac == -2) continue;
+        bool same_scope = a.nac == b.nac || a.nac == -1 || b.nac == -1;
+        if (same_scope && !r_.may_be_equal[u][v]) r_.distinct[v].push_back(static_cast<int>(u));
+      }
   }
 
   void record_sensitivity() {

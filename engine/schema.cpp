@@ -9,7 +9,7 @@ namespace loom::engine {
 KindId Schema::add_kind(std::string_view name) {
   if (find_kind(name)) throw std::invalid_argument(fmt::format("schema: kind '{}' declared twice", name));
   if (kinds_.size() >= 255) throw std::invalid_argument("schema: more than 255 kinds");
-  kinds_.push_back(KindSpec{std::string(name), {}, {}, 0});
+  kinds_.push_back(KindSpec{std::string(name), {}, {}, 0, {}});
   return static_cast<KindId>(kinds_.size() - 1);
 }
 
@@ -25,6 +25,7 @@ PortId Schema::add_port(KindId owner, std::string_view name, unsigned arity, Kin
                             k.slot_count, order});
   k.slot_count = static_cast<std::uint8_t>(k.slot_count + arity);
   k.ports.push_back(static_cast<PortId>(ports_.size() - 1));
+  k.slot_ports.insert(k.slot_ports.end(), arity, k.ports.back());
   return k.ports.back();
 }
 
@@ -54,14 +55,6 @@ std::optional<AttrId> Schema::find_attribute(KindId owner, std::string_view name
   for (AttrId a : kinds_.at(owner).attributes)
     if (attrs_[a].name == name) return a;
   return std::nullopt;
-}
-
-PortId Schema::port_of_slot(KindId kind, unsigned slot) const {
-  for (PortId p : kinds_.at(kind).ports) {
-    const PortSpec& s = ports_[p];
-    if (slot >= s.first_slot && slot < s.first_slot + s.arity) return p;
-  }
-  throw std::out_of_range(fmt::format("schema: kind '{}' has no slot {}", kinds_.at(kind).name, slot));
 }
 
 }  // namespace loom::engine

@@ -44,6 +44,7 @@ struct KindSpec {
   std::vector<PortId> ports;
   std::vector<AttrId> attributes;
   std::uint8_t slot_count = 0;  ///< sum of the arities of its ports
+  std::vector<PortId> slot_ports;  ///< the port of each slot, for O(1) lookups
 };
 
 class Schema {
@@ -68,7 +69,7 @@ public:
   std::optional<AttrId> find_attribute(KindId owner, std::string_view name) const;
 
   /// The port that slot `slot` of a `kind` element belongs to.
-  PortId port_of_slot(KindId kind, unsigned slot) const;
+  PortId port_of_slot(KindId kind, unsigned slot) const { return kinds_[kind].slot_ports[slot]; }
 
 private:
   std::vector<KindSpec> kinds_;
