@@ -10,6 +10,8 @@
 #include "src/check/validity.hpp"
 #include "src/gen/catalog.hpp"
 #include "src/gen/generators.hpp"
+#include "src/gen/sphere_embedding.hpp"
+#include "src/mesh/surface_validation.hpp"
 #include "src/util/error.hpp"
 
 using namespace loom;
@@ -195,6 +197,7 @@ TEST_CASE("generators are deterministic and every quad count is even") {
   for (const auto& kind : gen::generator_kinds()) {
     CAPTURE(kind.name);
     std::vector<int> args(kind.params.size(), 4);
+    if (kind.name == "randquad") args = {40, 4};  // at least 6 quads
     const gen::GeneratedMesh a = kind.make(args), b = kind.make(args);
     if (const auto* s = std::get_if<QuadSurface>(&a)) {
       CHECK(!kind.hex_mesh);
@@ -221,4 +224,114 @@ TEST_CASE("bad sizes are input errors naming the kind") {
   CHECK(gen::find_generator_kind("pyramid") == nullptr);
   REQUIRE(gen::find_generator_kind("cylinder") != nullptr);
   CHECK(gen::usage(*gen::find_generator_kind("cylinder")) == "cylinder N H");
+}
+
+namespace {
+
+std::size_t min_degree(const QuadSurface& s) {
+  std::vector<std::set<std::uint32_t>> neighbours(s.points.size());
+  for (const Quad& q : s.quads)
+    for (int i = 0; i < 4; ++i) neighbours[q[i]].insert(q[(i + 1) % 4]);
+  std::size_t least = SIZE_MAX;
+  for (const auto& n : neighbours) least = std::min(least, n.size());
+  return least;
+}
+
+double min_node_distance(const QuadSurface& s) {
+  double least = INFINITY;
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+    for (std::size_t j = i + 1; j < s.points.size(); ++j) least = std::min(least, norm(s.points[i] - s.points[j]));
+  return least;
+}
+
+/// Area of a flat quad, or of a warped quad's projection along its mean normal.
+double quad_area(const QuadSurface& s, const Quad& q) {
+  Vec3 twice_normal{0, 0, 0};
+  for (int i = 0; i < 4; ++i) twice_normal = twice_normal + cross(s.points[q[i]], s.points[q[(i + 1) % 4]]);
+  return norm(twice_normal) / 2;
+}
+
+}  // namespace
+
+TEST_CASE("randquad: F quads on the unit sphere, degree >= 3, valid for every even F up to 200") {
+  std::size_t quads = 0, folded = 0;
+  for (int f = 6; f <= 200; f += 2)
+    for (std::uint64_t seed = 0; seed < 10; ++seed) {
+      CAPTURE(f);
+      CAPTURE(seed);
+      const QuadSurface s = gen::randquad(f, seed);
+      REQUIRE(s.quads.size() == std::size_t(f));
+      CHECK(s.points.size() == std::size_t(f + 2));  // V - E + F = 2 with E = 2F
+      CHECK(min_degree(s) >= 3);
+      for (const Vec3& p : s.points) CHECK(norm(p) == doctest::Approx(1.0));
+      CHECK(min_node_distance(s) > 1e-6);
+      double smallest = INFINITY;
+      for (const Quad& q : s.quads) smallest = std::min(smallest, quad_area(s, q));
+      CHECK(smallest > 1e-9);
+      QuadSurface validated = s;
+      SurfaceSummary summary;
+      REQUIRE_NOTHROW(summary = validate_surface(validated, "randquad"));
+      CHECK(summary.genus == 0);
+      CHECK(!summary.flipped);  // already outward
+      CHECK(validated.quads == s.quads);
+      quads += s.quads.size();
+      folded += gen::folded_quad_count(s.points, s.quads);
+    }
+  // The layout is a relaxation, not a guarantee: a few quads may stay folded.
+  CHECK(folded * 200 < quads);
+}
+
+TEST_CASE("randquad: the seed decides the surface") {
+  const QuadSurface a = gen::randquad(100, 7), b = gen::randquad(100, 7);
+  CHECK(a.points == b.points);
+  CHECK(a.quads == b.quads);
+  std::set<std::vector<Quad>> distinct;
+  for (std::uint64_t seed = 0; seed < 10; ++seed) distinct.insert(gen::randquad(100, seed).quads);
+  CHECK(distinct.size() == 10);
+  // The cube is the only quadrangulation with 6 quads and degrees >= 3.
+  const QuadSurface cube = gen::randquad(6, 3);
+  CHECK(cube.points.size() == 8);
+  CHECK(min_degree(cube) == 3);
+}
+
+TEST_CASE("randquad: F must be even and at least 6") {
+  CHECK_THROWS_WITH_AS(gen::randquad(4, 0), doctest::Contains("gen randquad: F is 4, it must be at least 6"),
+                       InputError);
+  CHECK_THROWS_WITH_AS(gen::randquad(21, 0), doctest::Contains("odd"), InputError);
+  CHECK_THROWS_WITH_AS(gen::randquad(gen::kMaxRandquadFaces + 2, 0), doctest::Contains("limit"), InputError);
+  const auto* kind = gen::find_generator_kind("randquad");
+  REQUIRE(kind != nullptr);
+  CHECK(gen::usage(*kind) == "randquad F S");
+  CHECK_THROWS_WITH_AS(kind->make({10, -1}), doctest::Contains("S is -1"), InputError);
+}
+
+TEST_CASE("bosses: Gmsh's all-quad mesh of a box with two bosses") {
+  std::size_t coarse = 0;
+  for (int k : {1, 2}) {
+    CAPTURE(k);
+    const QuadSurface s = gen::bosses(k);
+    CHECK(s.quads.size() % 2 == 0);
+    CHECK(check_surface(s) == 0);
+    QuadSurface validated = s;
+    SurfaceSummary summary;
+    REQUIRE_NOTHROW(summary = validate_surface(validated, "bosses"));
+    CHECK(summary.genus == 0);
+    CHECK(!summary.flipped);
+    // The outline stays [0,6]x[0,4]x[0,3] exactly: no node was moved to fix parity.
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto [low, high] = std::minmax_element(s.points.begin(), s.points.end(),
+                                                   [axis](const Vec3& a, const Vec3& b) { return a[axis] < b[axis]; });
+      CHECK((*low)[axis] == 0.0);
+      CHECK((*high)[axis] == std::array{6.0, 4.0, 3.0}[axis]);
+    }
+    // Base 36, block 4, cylinder 1.5π less what its polygonal section cuts off.
+    CHECK(signed_volume(s) < 40 + 1.5 * std::numbers::pi);
+    CHECK(signed_volume(s) > 40 + 1.5 * 2.5);
+    const QuadSurface again = gen::bosses(k);
+    CHECK(again.points == s.points);
+    CHECK(again.quads == s.quads);
+    if (k == 1) coarse = s.quads.size();
+    if (k == 2) CHECK(s.quads.size() > coarse);
+  }
+  CHECK_THROWS_WITH_AS(gen::bosses(0), doctest::Contains("gen bosses: K is 0"), InputError);
 }

@@ -18,7 +18,19 @@ struct Options {
   std::string kind;
   std::vector<std::string> args;
   std::string output;
+  std::string seed, size;  ///< named forms of the sizes S and K
 };
+
+/// `randquad F --seed S` and `bosses --size K` (K defaults to 1) name their
+/// last size; the positional form works too.
+void fill_named_sizes(const loom::gen::GeneratorKind& kind, Options& o) {
+  while (o.args.size() < kind.params.size()) {
+    const std::string& param = kind.params[o.args.size()];
+    if (param == "S" && !o.seed.empty()) o.args.push_back(o.seed);
+    else if (param == "K") o.args.push_back(o.size.empty() ? "1" : o.size);
+    else break;
+  }
+}
 
 std::string kinds_list() {
   std::vector<std::string> names;
@@ -35,9 +47,10 @@ int parse_size(const loom::gen::GeneratorKind& kind, const std::string& param, c
   return value;
 }
 
-int run(const Options& o) {
+int run(Options o) {
   const auto* kind = loom::gen::find_generator_kind(o.kind);
   if (!kind) loom::fail_input("gen", fmt::format("unknown kind '{}'", o.kind), "choose one of " + kinds_list());
+  fill_named_sizes(*kind, o);
   if (o.args.size() != kind->params.size())
     loom::fail_input("gen " + kind->name,
                      fmt::format("expects {} argument{}, got {}", kind->params.size(),
@@ -81,6 +94,8 @@ loom::cli::Register reg{
        app.add_option("KIND", o->kind, "what to make (listed below)")->required();
        app.add_option("ARGS", o->args, "the kind's whole-number sizes");
        app.add_option("-o,--output", o->output, "file to write; the format follows the extension")->required();
+       app.add_option("--seed", o->seed, "the seed S of randquad");
+       app.add_option("--size", o->size, "the size K of bosses (default 1)");
        app.footer(kinds_help());
        return std::function<int()>([o] { return run(*o); });
      }}};

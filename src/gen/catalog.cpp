@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "src/gen/generator_args.hpp"
 #include "src/gen/generators.hpp"
 
 namespace loom::gen {
@@ -53,6 +54,19 @@ const std::vector<GeneratorKind>& generator_kinds() {
        "cube with one face split in two: 7 quads, no hex mesh exists",
        false,
        [](const std::vector<int>&) -> GeneratedMesh { return odd7(); }},
+      {"randquad",
+       {"F", "S"},
+       "random quadrangulation of the unit sphere: F quads (even, >= 6), seed S",
+       false,
+       [](const std::vector<int>& a) -> GeneratedMesh {
+         require_at_least("randquad", {{"S", a[1]}}, 0);
+         return randquad(a[0], static_cast<std::uint64_t>(a[1]));
+       }},
+      {"bosses",
+       {"K"},
+       "box with a cylindrical and a block boss, all-quad by Gmsh; K: 1 coarse, 2 finer...",
+       false,
+       [](const std::vector<int>& a) -> GeneratedMesh { return bosses(a[0]); }},
       {"hexgrid",
        {"A", "B", "C"},
        "hex mesh of [0,A]x[0,B]x[0,C], unit cells",

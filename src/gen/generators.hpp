@@ -5,6 +5,7 @@
 // InputError (where "gen KIND") for a non-positive size or a result larger than
 // kMaxGeneratedElements.
 #include <cstddef>
+#include <cstdint>
 
 #include "src/mesh/hex_mesh.hpp"
 #include "src/mesh/quad_surface.hpp"
@@ -13,6 +14,8 @@ namespace loom::gen {
 
 /// Largest number of quads or hexes a generator produces.
 inline constexpr std::size_t kMaxGeneratedElements = 20'000'000;
+/// Largest F for randquad (100,000 quads take about a minute, mostly placing them).
+inline constexpr int kMaxRandquadFaces = 100'000;
 
 /// Surface of the box [0,a]x[0,b]x[0,c] with unit quads (a*b*2 + b*c*2 + c*a*2 quads).
 QuadSurface box(int a, int b, int c);
@@ -49,6 +52,17 @@ QuadSurface odd7();
 /// Torus with n quads around the axis (major radius 2) and m around the tube
 /// (minor radius 1): n*m quads, genus 1. Needs n, m >= 3 and n*m even.
 QuadSurface torus(int n, int m);
+/// A random quadrangulation of the sphere with exactly `faces` quads (even,
+/// 6..kMaxRandquadFaces), simple, every node of degree >= 3, nodes on the unit
+/// sphere. Grown from the cube by hex flips (k = 1, 2) mixed with k = 3 hex
+/// flips and diagonal slides, then laid out on the sphere (docs/generators.md).
+/// The same seed gives the same surface.
+QuadSurface randquad(int faces, std::uint64_t seed);
+/// Surface of the box [0,6]x[0,4]x[0,1.5] with a cylindrical and a block boss on
+/// top, meshed all-quad by Gmsh (OpenCASCADE fuse; Frontal-Delaunay, blossom
+/// recombination, subdivision into quads). k in 1..50 sets the element size
+/// 3/k (1 coarse, 2 finer...).
+QuadSurface bosses(int k);
 /// Structured hex mesh of [0,a]x[0,b]x[0,c] with unit cells, VTK node order,
 /// positively oriented; node (i,j,k) has index i + (a+1)(j + (b+1)k).
 HexMesh hexgrid(int a, int b, int c);
