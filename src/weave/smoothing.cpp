@@ -12,7 +12,11 @@ double min_scaled_jacobian(const HexMesh& mesh) {
   return m;
 }
 
-SmoothingReport smooth_interior(HexMesh& mesh, const std::vector<bool>& fixed, int max_iterations) {
+SmoothingReport smooth_interior(HexMesh& mesh, const std::vector<bool>& fixed, const SmoothingOptions& options) {
+  return geometry::place_nodes(mesh, fixed, options);
+}
+
+int laplacian_smooth(HexMesh& mesh, const std::vector<bool>& fixed, int max_iterations) {
   static constexpr int hex_edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                                            {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
   std::vector<std::vector<std::uint32_t>> neighbours(mesh.points.size());
@@ -25,10 +29,10 @@ SmoothingReport smooth_interior(HexMesh& mesh, const std::vector<bool>& fixed, i
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
   }
-  SmoothingReport report;
-  report.min_before = report.min_after = min_scaled_jacobian(mesh);
+  double best_min = min_scaled_jacobian(mesh);
+  int kept = 0;
   std::vector<Vec3> best = mesh.points, next = mesh.points;
-  for (int it = 1; it <= max_iterations && report.min_after < 1.0; ++it) {
+  for (int it = 1; it <= max_iterations && best_min < 1.0; ++it) {
     for (std::size_t p = 0; p < mesh.points.size(); ++p) {
       if (fixed[p] || neighbours[p].empty()) continue;
       Vec3 sum{0, 0, 0};
@@ -36,15 +40,15 @@ SmoothingReport smooth_interior(HexMesh& mesh, const std::vector<bool>& fixed, i
       next[p] = (1.0 / static_cast<double>(neighbours[p].size())) * sum;
     }
     mesh.points = next;
-    double m = min_scaled_jacobian(mesh);
-    if (m > report.min_after) {
-      report.min_after = m;
-      report.iterations = it;
+    const double m = min_scaled_jacobian(mesh);
+    if (m > best_min) {
+      best_min = m;
+      kept = it;
       best = mesh.points;
     }
   }
   mesh.points = best;
-  return report;
+  return kept;
 }
 
 }  // namespace loom::weave
