@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "engine/rule_parser.hpp"
+#include "engine/rule_plan.hpp"
 
 namespace loom::engine {
 
@@ -24,25 +25,6 @@ void collect_index_vars(const CExpr& e, std::vector<int>& out) {
   if (e.index_var >= 0) out.push_back(e.index_var);
   for (const CExpr& a : e.args) collect_index_vars(a, out);
 }
-
-struct Incidence {
-  int owner, target;
-  PortId port;
-  CIndex index;
-  bool used = false;
-};
-
-struct Filter {
-  CExpr expr;
-  std::vector<int> vars, index_vars;
-  bool used = false;
-};
-
-struct PendingCount {
-  PlanOp op;
-  std::vector<int> vars;
-  bool used = false;
-};
 
 class Compiler {
 public:
@@ -80,8 +62,8 @@ public:
     for (std::size_t k = 0; k < ast_.pattern.negatives.size(); ++k) build_negative(static_cast<int>(k));
     if (ast_.order) r_.order = expr(*ast_.order, -1, -1, false);
     for (const auto& s : ast_.rewrite) statement(s);
-    record_sensitivity();
-    record_distinctness();
+    record_sensitivity(r_);
+    record_distinctness(r_);
     return std::move(r_);
   }
 
@@ -226,8 +208,8 @@ private:
     }
   }
 
-  Incidence incidence(const ast::Incidence& inc, int scope) {
-    Incidence c;
+  PlanIncidence incidence(const ast::Incidence& inc, int scope) {
+    PlanIncidence c;
     c.owner = var(inc.owner, inc.pos, scope);
     c.port = port(c.owner, inc.port, inc.pos);
     c.index = index(inc.index, c.port, inc.indexed, inc.pos, true);
@@ -238,8 +220,8 @@ private:
                                 article(schema_.kind(r_.vars[c.target].kind).name)));
     return c;
   }
-  Filter filter(CExpr e) {
-    Filter f;
+  PlanFilter filter(CExpr e) {
+    PlanFilter f;
     e.collect_vars(f.vars);
     collect_index_vars(e, f.index_vars);
     f.expr = std::move(e);
@@ -248,19 +230,21 @@ private:
 
   void build_main_plan() {
     const ast::Pattern& p = ast_.pattern;
-    std::vector<Incidence> incs;
+    std::vector<PlanIncidence> incs;
     for (const auto& inc : p.incidences) incs.push_back(incidence(inc, -1));
-    std::vector<Filter> filters;
+    std::vector<PlanFilter> filters;
     for (auto& [v, w] : where_)
       if (r_.vars[v].nac == -1) filters.push_back(filter(expr(*w, v, -1, true)));
     for (const auto& c : p.conditions) filters.push_back(filter(expr(c, -1, -1, true)));
-    std::vector<PendingCount> counts;
+    std::vector<PlanCount> counts;
     for (const auto& c : p.counts) counts.push_back(count(c));
-    bound_.assign(r_.vars.size(), false);
-    ibound_.assign(r_.index_vars.size() + 64, false);
-    bound_[r_.anchor] = true;
+    PlanBuilder builder(r_, schema_);
+    builder.bound.assign(r_.vars.size(), false);
+    builder.index_bound.assign(r_.index_vars.size() + 64, false);  // room for indices first met in negatives
+    builder.bound[r_.anchor] = true;
     r_.vars[r_.anchor].via = Variable::Via::anchor;
-    plan(r_.plan, incs, filters, counts, -1);
+    if (!builder.build(r_.plan, incs, filters, counts, -1)) fail(ast_.pos, "a condition uses an index that no incidence binds");
+    main_index_bound_ = builder.index_bound;
     for (std::size_t k = 0; k < p.negatives.size(); ++k) {
       PlanOp op;
       op.kind = PlanOp::Kind::negative;
@@ -269,8 +253,8 @@ private:
     }
   }
 
-  PendingCount count(const ast::Count& c) {
-    PendingCount pc;
+  PlanCount count(const ast::Count& c) {
+    PlanCount pc;
     KindId k = kind(c.kind, c.pos);
     auto p = schema_.find_port(k, c.port);
     if (!p) fail(c.pos, fmt::format("{} has no port '{}'", article(c.kind), c.port));
@@ -323,138 +307,20 @@ private:
 
   void build_negative(int k) {
     const ast::Pattern& p = ast_.pattern.negatives[k];
-    std::vector<Incidence> incs;
+    std::vector<PlanIncidence> incs;
     for (const auto& inc : p.incidences) incs.push_back(incidence(inc, k));
-    std::vector<Filter> filters;
+    std::vector<PlanFilter> filters;
     for (auto& [v, w] : where_)
       if (r_.vars[v].nac == k) filters.push_back(filter(expr(*w, v, k, true)));
     for (const auto& c : p.conditions) filters.push_back(filter(expr(c, -1, k, true)));
-    std::vector<PendingCount> none;
-    bound_.assign(r_.vars.size(), false);
-    for (int v = 0; v < r_.pattern_vars; ++v) bound_[v] = true;
-    ibound_ = main_ibound_;
+    std::vector<PlanCount> none;
+    PlanBuilder builder(r_, schema_);
+    builder.bound.assign(r_.vars.size(), false);
+    for (int v = 0; v < r_.pattern_vars; ++v) builder.bound[v] = true;
+    builder.index_bound = main_index_bound_;
     NegativePlan nac;
-    plan(nac.ops, incs, filters, none, k);
+    if (!builder.build(nac.ops, incs, filters, none, k)) fail(p.pos, "a condition uses an index that no incidence binds");
     r_.negatives.push_back(std::move(nac));
-  }
-
-  /// A condition `x.port[i] == y` or `x.port[i] == none` is a plain slot check,
-  /// cheaper than evaluating an expression; anything else stays a filter.
-  static PlanOp filter_op(const CExpr& e) {
-    PlanOp op;
-    if (e.op == CExpr::Op::eq && e.args.size() == 2) {
-      const CExpr *slot = &e.args[0], *other = &e.args[1];
-      if (other->op == CExpr::Op::port) std::swap(slot, other);
-      if (slot->op == CExpr::Op::port && (other->op == CExpr::Op::none || other->op == CExpr::Op::element)) {
-        op.kind = PlanOp::Kind::check;
-        op.owner = slot->var;
-        op.port = slot->port;
-        op.index.kind = slot->index_var >= 0 ? CIndex::Kind::variable : CIndex::Kind::fixed;
-        op.index.variable = slot->index_var;
-        op.index.offset = slot->offset;
-        op.target = other->op == CExpr::Op::none ? -1 : other->var;
-        return op;
-      }
-    }
-    op.kind = PlanOp::Kind::filter;
-    op.expr = e;
-    return op;
-  }
-
-  static PlanOp edge_op(PlanOp::Kind kind, const Incidence& inc) {
-    PlanOp op;
-    op.kind = kind;
-    op.owner = inc.owner;
-    op.target = inc.target;
-    op.port = inc.port;
-    op.index = inc.index;
-    return op;
-  }
-
-  bool all_bound(const std::vector<int>& vars, const std::vector<int>& ivars) const {
-    return std::all_of(vars.begin(), vars.end(), [&](int v) { return bound_[v]; }) &&
-           std::all_of(ivars.begin(), ivars.end(), [&](int v) { return ibound_[v]; });
-  }
-
-  void bind_index(const CIndex& ix) {
-    if (ix.kind == CIndex::Kind::variable) ibound_[ix.variable] = true;
-  }
-
-  /// Greedy search plan: emit every check that is ready, then extend by the
-  /// cheapest incidence (an out-slot lookup before an incoming scan), else scan.
-  void plan(std::vector<PlanOp>& ops, std::vector<Incidence>& incs, std::vector<Filter>& filters,
-            std::vector<PendingCount>& counts, int scope) {
-    auto emit_ready = [&] {
-      for (bool progress = true; progress;) {
-        progress = false;
-        for (auto& inc : incs)
-          if (!inc.used && bound_[inc.owner] && (inc.target < 0 || bound_[inc.target])) {
-            ops.push_back(edge_op(PlanOp::Kind::check, inc));
-            bind_index(inc.index);
-            inc.used = progress = true;
-          }
-        for (auto& f : filters)
-          if (!f.used && all_bound(f.vars, f.index_vars)) {
-            ops.push_back(filter_op(f.expr));
-            f.used = progress = true;
-          }
-        for (auto& c : counts)
-          if (!c.used && all_bound(c.vars, {})) {
-            ops.push_back(c.op);
-            c.used = progress = true;
-          }
-      }
-    };
-    auto in_scope = [&](int v) { return r_.vars[v].nac == scope; };
-    emit_ready();
-    for (;;) {
-      int best = -1, best_cost = 1 << 30;
-      for (std::size_t i = 0; i < incs.size(); ++i) {
-        const Incidence& inc = incs[i];
-        if (inc.used || inc.target < 0) continue;
-        int cost;
-        if (bound_[inc.owner] && !bound_[inc.target]) {
-          bool index_known = inc.index.kind == CIndex::Kind::fixed ||
-                             (inc.index.kind == CIndex::Kind::variable && ibound_[inc.index.variable]);
-          cost = index_known ? 1 : schema_.port(inc.port).arity;
-        } else if (!bound_[inc.owner] && bound_[inc.target]) {
-          cost = 8;
-        } else {
-          continue;
-        }
-        if (cost < best_cost) best = static_cast<int>(i), best_cost = cost;
-      }
-      if (best >= 0) {
-        Incidence& inc = incs[best];
-        PlanOp op = edge_op(bound_[inc.owner] ? PlanOp::Kind::lookup : PlanOp::Kind::incoming, inc);
-        int child = op.kind == PlanOp::Kind::lookup ? inc.target : inc.owner;
-        int parent = op.kind == PlanOp::Kind::lookup ? inc.owner : inc.target;
-        r_.vars[child].parent = parent;
-        r_.vars[child].via = op.kind == PlanOp::Kind::lookup ? Variable::Via::lookup : Variable::Via::incoming;
-        r_.vars[child].via_port = inc.port;
-        bound_[child] = true;
-        bind_index(inc.index);
-        inc.used = true;
-        ops.push_back(op);
-        emit_ready();
-        continue;
-      }
-      int unbound = -1;
-      for (std::size_t v = 0; v < r_.vars.size() && unbound < 0; ++v)
-        if (in_scope(static_cast<int>(v)) && !bound_[v] && !r_.vars[v].created) unbound = static_cast<int>(v);
-      if (unbound < 0) break;
-      PlanOp op;
-      op.kind = PlanOp::Kind::scan;
-      op.target = unbound;
-      r_.vars[unbound].via = Variable::Via::scan;
-      r_.global = true;
-      bound_[unbound] = true;
-      ops.push_back(op);
-      emit_ready();
-    }
-    for (const auto& f : filters)
-      if (!f.used) fail(ast_.pos, "a condition uses an index that no incidence binds");
-    if (scope == -1) main_ibound_ = ibound_;
   }
 
   void statement(const ast::Statement& s) {
@@ -568,80 +434,16 @@ private:
     fail(pos, "expected an element: a variable or x.port[i]");
   }
 
-  void record_distinctness() {
-    r_.distinct.assign(r_.vars.size(), {});
-    for (std::size_t v = 0; v < r_.vars.size(); ++v)
-      for (std::size_t u = 0; u < r_.vars.size(); ++u) {
-        const Variable &a = r_.vars[v], &b = r_.vars[u];
-        if (u == v || a.kind != b.kind || a.created || b.created || a.nac == -2 || b.nac == -2) continue;
-        bool same_scope = a.nac == b.nac || a.nac == -1 || b.nac == -1;
-        if (same_scope && !r_.may_be_equal[u][v]) r_.distinct[v].push_back(static_cast<int>(u));
-      }
-  }
-
-  void record_sensitivity() {
-    auto note = [](std::vector<std::uint16_t>& v, std::uint16_t x) {
-      if (std::find(v.begin(), v.end(), x) == v.end()) v.push_back(x);
-    };
-    std::vector<const std::vector<PlanOp>*> plans{&r_.plan};
-    for (const auto& n : r_.negatives) plans.push_back(&n.ops);
-    std::function<void(const CExpr&)> reads = [&](const CExpr& e) {
-      if (e.op == CExpr::Op::attribute) note(r_.vars[e.var].attrs, e.attr);
-      if (e.op == CExpr::Op::port) note(r_.vars[e.var].out_ports, e.port);
-      for (const auto& a : e.args) reads(a);
-    };
-    for (const auto* ops : plans)
-      for (const PlanOp& op : *ops) {
-        if (op.kind == PlanOp::Kind::lookup || op.kind == PlanOp::Kind::incoming || op.kind == PlanOp::Kind::check)
-          note(r_.vars[op.owner].out_ports, op.port);
-        if (op.kind == PlanOp::Kind::incoming && r_.vars[op.owner].nac >= 0) note(r_.vars[op.target].in_ports, op.port);
-        if (op.kind == PlanOp::Kind::count) note(r_.vars[op.target].in_ports, op.port);
-        if (op.expr) reads(*op.expr);
-      }
-    if (r_.order) reads(*r_.order);
-  }
-
   const ast::Rule& ast_;
   const Schema& schema_;
   Rule r_;
   std::vector<std::pair<int, const ast::Expr*>> where_;
-  std::vector<bool> bound_, ibound_, main_ibound_;
+  std::vector<bool> main_index_bound_;  ///< indices bound by the main pattern
   std::set<int> created_;  ///< `new` variables declared so far in the rewrite
 };
 
 }  // namespace
 
 Rule compile_rule(const ast::Rule& rule, const Schema& schema) { return Compiler(rule, schema).run(); }
-
-std::vector<Rule> compile_rules(const std::string& text, const std::string& file, const Schema& schema) {
-  std::vector<Rule> out;
-  for (const auto& r : parse_rules(text, file)) out.push_back(compile_rule(r, schema));
-  return out;
-}
-
-std::vector<Rule> load_rule_dir(const std::filesystem::path& dir, const Schema& schema) {
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec))
-    throw RuleError(dir.string(), {}, "no such rule directory; pass --rules DIR with the rule files (*.rule)");
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(dir))
-    if (entry.path().extension() == ".rule") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  std::vector<Rule> rules;
-  std::map<std::string, std::string> seen;
-  for (const auto& f : files) {
-    std::ifstream in(f, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (!in) throw RuleError(f.string(), {}, "cannot read the rule file");
-    for (auto& r : compile_rules(text.str(), f.string(), schema)) {
-      if (auto [it, fresh] = seen.emplace(r.name, f.string()); !fresh)
-        throw RuleError(f.string(), {}, fmt::format("rule '{}' is also defined in {}", r.name, it->second));
-      rules.push_back(std::move(r));
-    }
-  }
-  if (rules.empty()) throw RuleError(dir.string(), {}, "no *.rule file in the rule directory");
-  return rules;
-}
 
 }  // namespace loom::engine
