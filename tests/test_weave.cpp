@@ -3,9 +3,11 @@
 // deterministic.
 #include <doctest/doctest.h>
 
+#include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
 #include "src/gen/generators.hpp"
 #include "src/io/hex_io.hpp"
+#include "src/stc/build.hpp"
 #include "src/weave/pipeline.hpp"
 #include "tests/support.hpp"
 
@@ -87,4 +89,35 @@ TEST_CASE("without the seam rule a 2x2x2 box cannot close") {
   CHECK_FALSE(r.weave.closed);
   CHECK(r.weave.left.find("whiskers") != std::string::npos);
   CHECK_FALSE(r.mesh.has_value());
+}
+
+TEST_CASE("cross never wraps a hex around the convex corner of another (no triple doublet)") {
+  // After the first cross on a box, the new node n has three front faces, all
+  // faces of the new hex: front valence 3, yet crossing there would glue a
+  // second hex onto three faces of the first.
+  stc::Stc stc = stc::build_from_surface(gen::box(2, 2, 2));
+  auto rules = shipped_rules();
+  engine::Engine eng(stc.graph(), rules, weave::weave_actions(stc), {});
+  engine::Application app;
+  REQUIRE(eng.step(&app));
+  REQUIRE(app.rule->name == "cross");
+  int n_var = -1;
+  for (int v = 0; v < static_cast<int>(app.rule->vars.size()); ++v)
+    if (app.rule->vars[v].name == "n") n_var = v;
+  REQUIRE(n_var >= 0);
+  engine::Id n = app.result.elements[n_var];
+  int front_faces = 0;
+  for (engine::SlotId s : stc.graph().incoming(n))
+    if (stc.graph().kind(stc.graph().slot_owner(s)) == stc.ids().face) front_faces += stc.is_whisker(stc.graph().slot_owner(s));
+  CHECK(front_faces == 3);
+  const engine::Rule& cross = *app.rule;
+  engine::Matcher matcher(stc.graph());
+  engine::Match m;
+  CHECK_FALSE(matcher.first_at(cross, n, m));
+  // The same rule without its guard would cross there.
+  std::string text = "rule unguarded { anchor v match { v: node\n f1, f2, f3: face where self.cell[0] == none\n"
+                     " count(face.node -> v where self.cell[0] == none) == 3\n"
+                     " f1.node[i] == v  f2.node[j] == v  f3.node[k] == v } }";
+  auto unguarded = engine::compile_rules(text, "unguarded.rule", *stc::StcSchema::get().schema);
+  CHECK(matcher.first_at(unguarded.front(), n, m));
 }
