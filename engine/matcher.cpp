@@ -177,6 +177,10 @@ struct Matcher::Search {
           for (auto before = ring.begin(); before != it && !again; ++before)
             again = g.slot_owner(*before) == o && g.slot_port(*before) == op.port;
           if (again) continue;
+          if (op.count_empty_slot >= 0) {
+            counted += g.at(o, op.count_empty_port, static_cast<unsigned>(op.count_empty_slot)) == no_element;
+            continue;
+          }
           m.elements[op.owner] = o;
           counted += !op.expr || matcher.evaluate(*op.expr, m) != 0;
           m.elements[op.owner] = no_element;

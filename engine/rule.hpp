@@ -56,6 +56,9 @@ struct PlanOp {
   CExpr::Op comparison = CExpr::Op::eq;
   std::int64_t bound = 0;
   int nac = -1;
+  /// count: when >= 0, owners count only if slot count_empty_slot of this port is empty.
+  int count_empty_slot = -1;
+  PortId count_empty_port = 0;
 };
 
 struct Variable {

@@ -282,6 +282,14 @@ private:
       for (int v : vars)
         if (v != self_var) pc.vars.push_back(v);
       collect_reads(*pc.op.expr, self_var, watch.attrs, watch.ports);
+      // `self.port[k] == none`, the common case, is counted without evaluating.
+      PlanOp slot = filter_op(*pc.op.expr);
+      if (slot.kind == PlanOp::Kind::check && slot.owner == self_var && slot.target < 0 &&
+          slot.index.kind == CIndex::Kind::fixed) {
+        pc.op.count_empty_port = slot.port;
+        pc.op.count_empty_slot = slot.index.offset;
+        pc.op.expr.reset();
+      }
     }
     pc.vars.push_back(target);
     r_.count_watches.push_back(watch);

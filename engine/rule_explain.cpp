@@ -75,7 +75,12 @@ void explain_ops(std::ostringstream& out, const Rule& r, const Schema& s, const 
         static const char* cmp[] = {"==", "!=", "<", "<=", ">", ">="};
         int c = static_cast<int>(op.comparison) - static_cast<int>(CExpr::Op::eq);
         out << fmt::format("count     {}s with .{} -> {}{} {} {}", s.kind(op.count_kind).name, s.port(op.port).name,
-                           var(op.target), op.expr ? " where " + expr_text(r, s, *op.expr) : "", cmp[c], op.bound);
+                           var(op.target),
+                           op.expr ? " where " + expr_text(r, s, *op.expr)
+                           : op.count_empty_slot >= 0
+                               ? fmt::format(" where self.{}[{}] == none", s.port(op.count_empty_port).name, op.count_empty_slot)
+                               : "",
+                           cmp[c], op.bound);
         break;
       }
       case PlanOp::Kind::negative:
