@@ -191,7 +191,7 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
   app.add_flag("--dot-steps", o->dot_steps, "also write one picture per rule application into DIR/steps");
   app.add_option("--trace", o->trace, "write one line per rule application to this file");
   app.add_option("--report", o->report, "write a JSON report to this file");
-  app.add_flag("--partial", o->partial, "when the weave does not close, write its state as DOT for inspection");
+  app.add_flag("--partial", o->partial, "when the weave does not close, write the hexes woven so far and the STC (DOT/SVG) for inspection");
   app.add_flag("-q,--quiet", o->quiet, "no progress line");
   app.add_flag("--weld", o->weld, "merge coincident surface nodes instead of rejecting them");
   return std::function<int()>([o] {
