@@ -1,0 +1,102 @@
+// A small corpus (as bench/bench_corpus weaves, in miniature): no run ever
+// reports success on a mesh the checker rejects. Every mesh a run produces is
+// checked again, independently, against its surface; whenever the pipeline
+// says criteria 1-6 hold, check_hex_mesh must agree, and whenever it says the
+// mesh is valid, every scaled Jacobian must be > 0. Closed boxes give a*b*c hexes.
+#include <doctest/doctest.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "engine/rule_compiler.hpp"
+#include "src/check/validity.hpp"
+#include "src/gen/generators.hpp"
+#include "src/weave/pipeline.hpp"
+
+using namespace loom;
+
+namespace {
+
+struct Case {
+  std::string name;
+  std::function<QuadSurface()> make;
+  std::size_t box_hexes = 0;  ///< a*b*c for a box, else 0
+};
+
+std::vector<Case> small_corpus() {
+  std::vector<Case> cases = {
+      {"box 2 2 2", [] { return gen::box(2, 2, 2); }, 8},
+      {"box 3 2 1", [] { return gen::box(3, 2, 1); }, 6},
+      {"lshape 2", [] { return gen::lshape(2); }, 0},
+      {"tet4", [] { return gen::tet4(); }, 0},
+      {"cubesphere 3", [] { return gen::cubesphere(3); }, 0},
+  };
+  for (int f = 6; f <= 16; f += 2)
+    for (int s = 0; s <= 2; ++s)
+      cases.push_back({fmt::format("randquad {} s{}", f, s), [f, s] { return gen::randquad(f, std::uint64_t(s)); }, 0});
+  return cases;
+}
+
+std::vector<std::pair<std::string, engine::Strategy>> strategies() {
+  engine::Strategy random1 = engine::Strategy::parse("random");
+  random1.seed = 1;
+  engine::Strategy random2 = engine::Strategy::parse("random");
+  random2.seed = 2;
+  return {{"priority", engine::Strategy::parse("priority")}, {"random-1", random1}, {"random-2", random2}};
+}
+
+}  // namespace
+
+TEST_CASE("corpus: the pipeline's verdict never beats the checker's") {
+  auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  int meshes = 0, valid = 0;
+  for (const auto& c : small_corpus()) {
+    QuadSurface surface = c.make();
+    for (const auto& [name, strategy] : strategies()) {
+      CAPTURE(c.name);
+      CAPTURE(name);
+      weave::WeaveOptions options;
+      options.strategy = strategy;
+      options.max_steps = 5000;  // these weaves need a few hundred at most
+      weave::MeshingResult r = weave::mesh_surface(surface, rules, options);
+      if (!r.mesh) {
+        CHECK_FALSE(r.combinatorially_valid());
+        continue;
+      }
+      REQUIRE(r.weave.closed);
+      REQUIRE(r.check);
+      ++meshes;
+      ValidityReport again = check_hex_mesh(*r.mesh, &surface);
+      CHECK(again.hexes == r.mesh->hexes.size());
+      if (r.combinatorially_valid()) {
+        CHECK(again.combinatorial_valid());
+        int decided = 0;
+        for (const auto& criterion : again.criteria)
+          if (criterion.number <= 6) {
+            CAPTURE(criterion.number);
+            CHECK(criterion.passed);
+            ++decided;
+          }
+        CHECK(decided == 6);
+      }
+      if (r.combinatorially_valid() && r.check->valid()) {
+        ++valid;
+        CHECK(again.valid());
+        for (std::size_t h = 0; h < r.mesh->hexes.size(); ++h) {
+          CAPTURE(h);
+          CHECK(scaled_jacobian(*r.mesh, h) > 0);
+        }
+      }
+      if (c.box_hexes && r.weave.closed) {
+        CHECK(r.stc.hexes() == c.box_hexes);
+        CHECK(r.mesh->hexes.size() == c.box_hexes);
+      }
+    }
+  }
+  // The corpus is not vacuous: the block shapes at least close and are valid.
+  CHECK(meshes >= 12);
+  CHECK(valid >= 12);
+}
