@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <string>
 
+#include "src/mesh/quad_surface.hpp"
+
 namespace loom::test {
 
 struct CliResult {
@@ -33,5 +35,13 @@ inline std::filesystem::path data(const std::string& name) { return std::filesys
 
 /// Number of lines in s (a final line without '\n' counts).
 int count_lines(const std::string& s);
+
+/// The whole content of a file (empty if unreadable).
+std::string slurp(const std::filesystem::path& p);
+/// Writes `text` to a file, replacing it.
+void spit(const std::filesystem::path& p, const std::string& text);
+
+/// The unit cube as 6 outward quads.
+QuadSurface unit_cube();
 
 }  // namespace loom::test

@@ -15,14 +15,9 @@ using loom::test::count_lines;
 using loom::test::run_cli;
 using loom::test::ScratchDir;
 
-namespace {
+using loom::test::slurp;
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+namespace {
 
 /// Writes `mesh` to dir/name and returns `loom check` of it against dir/box.obj.
 test::CliResult check_against_box(const ScratchDir& dir, const std::string& name, const HexMesh& mesh) {

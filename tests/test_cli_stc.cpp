@@ -13,6 +13,8 @@ using loom::test::run_cli;
 using loom::test::ScratchDir;
 namespace fs = std::filesystem;
 
+using loom::test::slurp;
+
 namespace {
 nlohmann::json stc_json(const fs::path& mesh) {
   auto r = run_cli("stc " + mesh.string() + " --json");
@@ -20,12 +22,6 @@ nlohmann::json stc_json(const fs::path& mesh) {
   return nlohmann::json::parse(r.out);
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 }  // namespace
 
 TEST_CASE("loom stc reports hexes, sheets and chords of a hex grid") {

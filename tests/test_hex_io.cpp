@@ -13,6 +13,9 @@
 using namespace loom;
 namespace fs = std::filesystem;
 
+using loom::test::slurp;
+using loom::test::spit;
+
 namespace {
 
 // Two unit cubes side by side along x, with one node nudged off the grid.
@@ -27,18 +30,6 @@ HexMesh two_hexes() {
                        id(x + 1, 1, 1), id(x, 1, 1)});
   m.points[4] = {1.0 / 3.0, 0.1 + 0.2, 1e-310};
   return m;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void spit(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
 }
 
 const std::vector<std::string> hex_extensions = {".vtk", ".vtu", ".msh"};

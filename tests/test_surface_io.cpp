@@ -17,14 +17,11 @@
 using namespace loom;
 namespace fs = std::filesystem;
 
-namespace {
+using loom::test::slurp;
+using loom::test::spit;
+using loom::test::unit_cube;
 
-QuadSurface unit_cube() {
-  QuadSurface s;
-  s.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  s.quads = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-  return s;
-}
+namespace {
 
 // The cube's combinatorics with coordinates that a %.16g writer would not
 // round-trip, plus extremes and random doubles over many magnitudes.
@@ -40,18 +37,6 @@ QuadSurface awkward_cube() {
                  -std::numeric_limits<double>::min()};
   s.points[2] = {2.0 / 3.0, 1e23, 123456789.123456789};
   return s;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void spit(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
 }
 
 void check_same(const QuadSurface& a, const QuadSurface& b) {

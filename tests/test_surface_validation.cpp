@@ -13,14 +13,9 @@
 
 using namespace loom;
 
-namespace {
+using loom::test::unit_cube;
 
-QuadSurface unit_cube() {
-  QuadSurface s;
-  s.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  s.quads = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-  return s;
-}
+namespace {
 
 QuadSurface shifted(QuadSurface s, Vec3 by, std::uint32_t index_offset) {
   for (Vec3& p : s.points) p = p + by;
