@@ -33,6 +33,7 @@
 #include <fmt/format.h>
 
 #include "engine/rule_compiler.hpp"
+#include "bench/bench_options.hpp"
 #include "src/check/validity.hpp"
 #include "src/gen/generators.hpp"
 #include "src/io/surface_io.hpp"
@@ -470,38 +471,27 @@ struct Options {
 
 Options parse_options(int argc, char** argv) {
   Options o;
-  bool merging = false;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument("bench_corpus: " + a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--dir") o.dir = value(), merging = false;
-    else if (a == "--csv") o.csv = value(), merging = false;
-    else if (a == "--md") o.md = value(), merging = false;
-    else if (a == "--md-full") o.md_full = true, merging = false;
-    else if (a == "--list") o.list = true, merging = false;
-    else if (a == "--randquad-max") o.randquad_max = std::stoi(value()), merging = false;
-    else if (a == "--max-steps") o.max_steps = std::stoull(value()), merging = false;
-    else if (a == "--timeout") o.timeout = std::stod(value()), merging = false;
-    else if (a == "--only") o.only = value(), merging = false;
-    else if (a == "--shard") {
-      std::string s = value();
-      auto slash = s.find('/');
-      if (slash == std::string::npos) throw std::invalid_argument("bench_corpus: --shard wants K/N, e.g. 3/16");
-      o.shard_k = std::stoi(s.substr(0, slash));
-      o.shard_n = std::stoi(s.substr(slash + 1));
-      if (o.shard_n < 1 || o.shard_k < 1 || o.shard_k > o.shard_n)
-        throw std::invalid_argument("bench_corpus: --shard K/N needs 1 <= K <= N");
-      merging = false;
-    } else if (a == "--merge") merging = true;
-    else if (merging && !a.starts_with("--")) o.merge.push_back(a);
-    else if (a == "-h" || a == "--help") {
-      std::cout << "bench_corpus [--dir DIR] [--randquad-max F] [--max-steps N] [--timeout S] [--only TEXT]"
-                   " [--shard K/N] [--csv FILE] [--md FILE] [--md-full] [--list]\nbench_corpus --merge A.csv B.csv ... [--csv FILE] [--md FILE] [--md-full]\n";
-      std::exit(0);
-    } else throw std::invalid_argument("bench_corpus: unknown option " + a);
+  std::string shard;
+  CLI::App app{"Run the corpus under several strategies and rule orderings; write CSV and Markdown", "bench_corpus"};
+  app.add_option("--dir", o.dir, "also run every surface file of this directory");
+  app.add_option("--randquad-max", o.randquad_max, "largest randquad F in the corpus");
+  app.add_option("--max-steps", o.max_steps, "rule applications per run at most (0: the library's limit)");
+  app.add_option("--timeout", o.timeout, "wall-clock seconds per run at most");
+  app.add_option("--only", o.only, "only inputs or configurations whose name contains TEXT");
+  app.add_option("--shard", shard, "run only shard K of N (rows by index modulo N), e.g. 3/16");
+  app.add_option("--csv", o.csv, "write the table as CSV");
+  app.add_option("--md", o.md, "write the summary as Markdown");
+  app.add_flag("--md-full", o.md_full, "Markdown also lists every row");
+  app.add_flag("--list", o.list, "list the runs without running them");
+  app.add_option("--merge", o.merge, "merge shard CSVs instead of running");
+  loom::bench::parse_or_exit(app, argc, argv);
+  if (!shard.empty()) {
+    auto slash = shard.find('/');
+    if (slash == std::string::npos) throw std::invalid_argument("bench_corpus: --shard wants K/N, e.g. 3/16");
+    o.shard_k = std::stoi(shard.substr(0, slash));
+    o.shard_n = std::stoi(shard.substr(slash + 1));
+    if (o.shard_n < 1 || o.shard_k < 1 || o.shard_k > o.shard_n)
+      throw std::invalid_argument("bench_corpus: --shard K/N needs 1 <= K <= N");
   }
   return o;
 }

@@ -19,6 +19,7 @@
 
 #include <fmt/format.h>
 
+#include "bench/bench_options.hpp"
 #include "engine/matcher.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/vf2_reference.hpp"
@@ -215,29 +216,13 @@ struct Options {
 
 Options parse_options(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument("bench_matcher: " + a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--max-elements")
-      o.max_elements = std::stoull(value());
-    else if (a == "--vf2-k")
-      o.vf2_k = std::max<std::size_t>(1, std::stoull(value()));
-    else if (a == "--vf2-budget")
-      o.vf2_budget_s = std::stod(value());
-    else if (a == "--repeats")
-      o.repeats = std::max(1, std::stoi(value()));
-    else if (a == "--csv")
-      o.csv = value();
-    else if (a == "--help" || a == "-h") {
-      std::puts(
-          "usage: bench_matcher [--max-elements N] [--vf2-k K] [--vf2-budget SECONDS] [--repeats R] [--csv FILE]");
-      std::exit(0);
-    } else
-      throw std::invalid_argument("bench_matcher: unknown option " + a + " (try --help)");
-  }
+  CLI::App app{"Cost per match: anchored matcher, hand-written loop, VF2 from scratch", "bench_matcher"};
+  app.add_option("--max-elements", o.max_elements, "largest STC to measure (elements)");
+  app.add_option("--vf2-k", o.vf2_k, "VF2: time only its first K matches")->check(CLI::PositiveNumber);
+  app.add_option("--vf2-budget", o.vf2_budget_s, "VF2: skip larger graphs once K matches take longer (seconds)");
+  app.add_option("--repeats", o.repeats, "repeats (medians are printed)")->check(CLI::PositiveNumber);
+  app.add_option("--csv", o.csv, "also write the table as CSV");
+  loom::bench::parse_or_exit(app, argc, argv);
   return o;
 }
 

@@ -23,6 +23,7 @@
 #include <fmt/format.h>
 
 #include "engine/rule_compiler.hpp"
+#include "bench/bench_options.hpp"
 #include "src/check/validity.hpp"
 #include "src/gen/generators.hpp"
 #include "src/stc/build.hpp"
@@ -193,28 +194,13 @@ struct Options {
 
 Options parse_options(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument("bench_weave: " + a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--max-hexes")
-      o.max_hexes = std::stoull(value());
-    else if (a == "--repeats")
-      o.repeats = std::max(1, std::stoi(value()));
-    else if (a == "--csv")
-      o.csv = value();
-    else if (a == "--in-process")
-      o.in_process = true;
-    else if (a == "--one")
-      o.one = std::stoi(value());
-    else if (a == "--help" || a == "-h") {
-      std::puts("usage: bench_weave [--max-hexes N] [--repeats R] [--csv FILE] [--in-process]");
-      std::exit(0);
-    } else
-      throw std::invalid_argument("bench_weave: unknown option " + a + " (try --help)");
-  }
+  CLI::App app{"Weave boxes of 10^3 to 10^6 hexes: hexes per second and bytes per hex", "bench_weave"};
+  app.add_option("--max-hexes", o.max_hexes, "largest box to weave");
+  app.add_option("--repeats", o.repeats, "runs per size (medians are printed)")->check(CLI::PositiveNumber);
+  app.add_option("--csv", o.csv, "also write the table as CSV");
+  app.add_flag("--in-process", o.in_process, "no child processes (for profilers; memory not reported)");
+  app.add_option("--one", o.one, "child mode: weave box N^3 and print its figures")->group("");
+  loom::bench::parse_or_exit(app, argc, argv);
   return o;
 }
 
