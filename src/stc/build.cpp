@@ -150,6 +150,19 @@ void group_sheets_and_chords(Stc& stc) {
 constexpr std::array<std::array<int, 4>, 6> hex_face_cycles{{
     {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {3, 7, 6, 2}, {0, 4, 7, 3}, {1, 2, 6, 5}}};
 
+/// Marks the nodes of boundary face `f` and records their points (in order of
+/// face.boundary, which callers number 0, 1, 2, ...).
+void record_boundary_points(Stc& stc, Id f) {
+  engine::Graph& g = stc.graph();
+  const StcSchema& ids = stc.ids();
+  std::array<std::int32_t, 4> points{};
+  for (unsigned i = 0; i < 4; ++i) {
+    g.set(stc.face_node(f, i), ids.node_boundary, 1);
+    points[i] = g.get(stc.face_node(f, i), ids.node_point);
+  }
+  stc.boundary_points().push_back(points);
+}
+
 }  // namespace
 
 Stc build_from_hex_mesh(const HexMesh& mesh) {
@@ -198,7 +211,7 @@ Stc build_from_hex_mesh(const HexMesh& mesh) {
         g.link(f, ids.face_cell, 1, no_element);
       }
       g.set(f, ids.face_boundary, boundary++);
-      for (unsigned i = 0; i < 4; ++i) g.set(stc.face_node(f, i), ids.node_boundary, 1);
+      record_boundary_points(stc, f);
     }
   group_sheets_and_chords(stc);
   stc.debug_check();
@@ -219,7 +232,7 @@ Stc build_from_surface(const QuadSurface& surface) {
     bool same = false;
     Id f = complex.face(surface.quads[q], same);
     g.set(f, ids.face_boundary, static_cast<std::int32_t>(q));
-    for (unsigned i = 0; i < 4; ++i) g.set(stc.face_node(f, i), ids.node_boundary, 1);
+    record_boundary_points(stc, f);
   }
   group_sheets_and_chords(stc);
   stc.debug_check();

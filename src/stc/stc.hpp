@@ -62,6 +62,11 @@ public:
   /// Coordinates of mesh nodes, indexed by node.point.
   std::vector<Vec3>& points() { return points_; }
   const std::vector<Vec3>& points() const { return points_; }
+  /// For each boundary quad (face.boundary), the point of each of its four
+  /// nodes as built, in the face's node order: what a node split after a
+  /// through-cell needs to know which surface node a boundary face stands on.
+  std::vector<std::array<std::int32_t, 4>>& boundary_points() { return boundary_points_; }
+  const std::vector<std::array<std::int32_t, 4>>& boundary_points() const { return boundary_points_; }
 
   // --- navigation (all O(1)) ---------------------------------------------
   Id hex_face(Id hex, unsigned i) const { return graph_.at(hex, ids_->hex_face, i); }
@@ -113,6 +118,7 @@ private:
   const StcSchema* ids_;
   engine::Graph graph_;
   std::vector<Vec3> points_;
+  std::vector<std::array<std::int32_t, 4>> boundary_points_;
 };
 
 }  // namespace loom::stc
