@@ -201,6 +201,7 @@ void Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
     applied->step = counters_.steps;
     applied->rule = &rules_[r];
     applied->matched = m;
+    applied->first_new = g_.id_bound();
   }
   log_.clear();
   g_.set_change_log(&log_);

@@ -29,6 +29,7 @@ struct Application {
   const Rule* rule = nullptr;
   Match matched;               ///< the elements matched, before the rewrite
   Match result;                ///< after: created elements bound, merged ones replaced
+  Id first_new = no_element;   ///< elements with ids from here on were made by the step (actions included)
 };
 
 struct EngineCounters {

@@ -37,6 +37,9 @@ void StepDumper::dump(const engine::Application& step, const stc::Stc& stc) {
   for (const engine::Match* m : {&step.matched, &step.result})
     for (engine::Id e : m->elements)
       if (e != engine::no_element && g.alive(e)) touched.insert(e);
+  // What actions made (a pillow sheet's hexes, faces, edges, nodes, chords).
+  for (engine::Id e = step.first_new; e < g.id_bound(); ++e)
+    if (g.alive(e)) touched.insert(e);
   std::set<engine::Id> sheets;
   // Only what the step matched and made: a whole neighbourhood is unreadable.
   for (engine::Id e : touched) {

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "src/weave/pillow.hpp"
+
 namespace loom::weave {
 
 std::filesystem::path default_rules_dir() {
@@ -29,6 +31,37 @@ engine::Actions weave_actions(stc::Stc& stc) {
     Vec3 n = at(args[2]) + at(args[3]) + at(args[4]) - 2.0 * v;
     g.set(args[0], ids.node_point, static_cast<std::int32_t>(stc.points().size()));
     stc.points().push_back(n);
+  });
+  // place_off_face(n, a, b, d): n is the corner above a of a hex standing on
+  // a front face a b . d (which faces away from the hex), at the face's
+  // mean edge length from a.
+  actions.add("place_off_face", [&stc](engine::Graph& g, std::span<const engine::Id> args) {
+    const auto& ids = stc.ids();
+    auto at = [&](engine::Id node) {
+      std::int32_t p = g.get(node, ids.node_point);
+      if (p < 0) throw std::runtime_error(fmt::format("place_off_face: node {} has no position yet", node));
+      return stc.points()[static_cast<std::size_t>(p)];
+    };
+    Vec3 a = at(args[1]), ab = at(args[2]) - a, ad = at(args[3]) - a;
+    Vec3 away = cross(ab, ad);
+    double length = 0.5 * (norm(ab) + norm(ad)), size = norm(away);
+    Vec3 n = size > 0 ? a - (length / size) * away : a;
+    g.set(args[0], ids.node_point, static_cast<std::int32_t>(stc.points().size()));
+    stc.points().push_back(n);
+  });
+  // pillow_star(n): a pillow sheet around every hex at node n.
+  actions.add("pillow_star", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+    auto star = hexes_at_node(stc, args[0]);
+    insert_pillow(stc, star);
+  });
+  // pillow_hex(h): a pillow sheet around hex h alone.
+  actions.add("pillow_hex", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+    insert_pillow(stc, args.first(1));
+  });
+  // split_pinched(n): one node per group of n's hexes that meet only at n;
+  // each part's boundary flag is 1 exactly when it holds a boundary face.
+  actions.add("split_pinched", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+    split_pinched_node(stc, args[0]);
   });
   return actions;
 }
@@ -93,6 +126,24 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
     }
     return false;
   };
+  // The front's size in O(1): every face lacks one hex per whisker side, so
+  // whiskers = (2 per inner face + 1 per boundary face) - 6 per hex. A weave
+  // whose front stops reaching new minima (crossings rolling round a front
+  // that never shrinks) is at a dead end as surely as one no rule applies to.
+  const auto& ids = stc.ids();
+  std::int64_t boundary_faces = 0;
+  for (engine::Id f : stc.graph().members(ids.face)) boundary_faces += stc.is_boundary(f);
+  auto front = [&] {
+    return 2 * static_cast<std::int64_t>(stc.graph().size(ids.face)) - boundary_faces -
+           6 * static_cast<std::int64_t>(stc.graph().size(ids.hex));
+  };
+  std::int64_t smallest_front = front();
+  std::size_t since_smallest = 0;
+  auto stalled = [&] {
+    std::int64_t now = front();
+    if (now < smallest_front) smallest_front = now, since_smallest = 0;
+    return ++since_smallest > static_cast<std::size_t>(4 * smallest_front + 256);
+  };
   while (eng.counters().steps < limit) {
     if (backtracking) {
       choices.push_back({eng.mark(), 0});
@@ -103,7 +154,11 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
     }
     if (eng.step(&app)) {
       after();
-      continue;
+      if (!stalled()) continue;
+      // Backtracking within the window cannot leave a front that has been
+      // rolling for longer than the window: give up.
+      ++result.stalls;
+      break;
     }
     if (backtracking) {
       eng.release(choices.back().before);
@@ -124,6 +179,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   if (!result.closed) {
     result.left = describe_left(stc);
     if (result.backtracks) result.left += fmt::format(" after {} backtracks", result.backtracks);
+    if (result.stalls) result.left += fmt::format("; the front stopped shrinking for {} applications", since_smallest);
     if (result.step_limit_hit) result.left += fmt::format(" (stopped after {} applications)", result.steps);
   }
   return result;
