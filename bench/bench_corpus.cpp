@@ -60,6 +60,7 @@ struct Config {
   std::string strategy;
   std::uint64_t seed = 0;
   bool backtracking = true;
+  std::size_t attempts = 1;  ///< WeaveOptions::attempts (random restarts)
 };
 
 const std::vector<Config>& configs() {
@@ -70,6 +71,7 @@ const std::vector<Config>& configs() {
       {"random-2", "random", 2, true},
       {"seq-seam-cross", "sequence:seam,cross", 0, true},
       {"seq-cross-seam", "sequence:cross,seam", 0, true},
+      {"portfolio-16", "priority", 0, true, 16},
   };
   return list;
 }
@@ -245,6 +247,7 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
   options.strategy = engine::Strategy::parse(config.strategy);
   options.strategy.seed = config.seed;
   if (!config.backtracking) options.max_backtracks = 0;
+  options.attempts = config.attempts;
   options.max_steps = max_steps;
   // A wall-clock guard: a run that explodes is stopped (the row says so).
   struct Timeout {
@@ -265,6 +268,15 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
     r.backtracks = m.weave.backtracks;
     r.whiskers_left = m.weave.whiskers_left;
     r.hexes = m.stc.hexes();
+    // Degeneracies met: through-3-cells left by seam_through, doublets
+    // pillowed; pillows: every pillow sheet inserted (pillow_* rules).
+    std::size_t degeneracies = 0, pillows = 0;
+    for (const auto& [name, n] : m.weave.applications) {
+      if (name == "seam_through" || name == "pillow_doublet") degeneracies += n;
+      if (name.rfind("pillow_", 0) == 0 && name != "pillow_face") pillows += n;
+    }
+    r.degeneracies = std::to_string(degeneracies);
+    r.pillows = std::to_string(pillows);
     for (const auto& [name, n] : m.weave.applications) {
       if (name == "cross") r.cross = n;
       else if (name == "seam") r.seam = n;

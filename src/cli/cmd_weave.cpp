@@ -31,6 +31,7 @@ namespace {
 struct Options {
   std::string surface, output, rules, strategy = "priority", dot_dir, trace, report;
   std::uint64_t seed = 0;
+  std::size_t attempts = 16;
   bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false;
 };
 
@@ -79,6 +80,7 @@ nlohmann::json report_json(const Options& o, const loom::weave::MeshingResult& r
   j["input"] = o.surface;
   j["strategy"] = strategy.name();
   j["seed"] = strategy.seed;
+  j["attempts"] = r.attempts;
   j["backtracks"] = r.weave.backtracks;
   j["closed"] = r.weave.closed;
   j["steps"] = r.weave.steps;
@@ -122,6 +124,7 @@ int run(const Options& o) {
   auto rules = load_rules(o.rules.empty() ? loom::weave::default_rules_dir().string() : o.rules);
   loom::weave::WeaveOptions options;
   options.strategy = parse_strategy(o, rules);
+  options.attempts = o.attempts;
 
   std::string trace;
   std::optional<loom::weave::StepDumper> steps;
@@ -137,6 +140,11 @@ int run(const Options& o) {
     }
   };
 
+  options.before_attempt = [&](std::size_t, const loom::engine::Strategy&) {
+    trace.clear();
+    if (steps) steps->clear();
+  };
+
   loom::weave::MeshingResult result;
   try {
     result = loom::weave::mesh_surface(surface, std::move(rules), options);
@@ -148,11 +156,12 @@ int run(const Options& o) {
   // Diagnostics describe the run whatever its outcome; the mesh is written only on success.
   if (!o.trace.empty()) loom::write_text_atomically(o.trace, trace);
   if (!o.report.empty())
-    loom::write_text_atomically(o.report, report_json(o, result, options.strategy).dump(2) + "\n");
+    loom::write_text_atomically(o.report, report_json(o, result, result.strategy).dump(2) + "\n");
   if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir);
 
   if (!result.weave.closed) {
-    std::cerr << "loom: weave did not close: " << result.weave.left << "; try another --strategy or add rules\n";
+    std::cerr << "loom: weave did not close" << (result.attempts > 1 ? fmt::format(" in {} attempts", result.attempts) : "")
+              << ": " << result.weave.left << "; try another --strategy or add rules\n";
     if (o.partial) write_partial(o.output, result.stc);
     return 1;
   }
@@ -167,9 +176,12 @@ int run(const Options& o) {
   const auto& q = result.check->quality;
   std::string counts;
   for (const auto& [rule, n] : result.weave.applications) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", rule, n);
-  std::cout << fmt::format("woven: {} hex{} in {} steps ({}); min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
+  std::string attempt = result.attempts == 1 ? std::string()
+                        : fmt::format(" (attempt {}: strategy {} seed {})", result.attempts,
+                                      result.strategy.name(), result.strategy.seed);
+  std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}; min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
                            result.mesh->hexes.size(), result.mesh->hexes.size() == 1 ? "" : "es", result.weave.steps,
-                           counts, q.min_scaled_jacobian,
+                           counts, attempt, q.min_scaled_jacobian,
                            q.mean_scaled_jacobian, o.output);
   if (q.below_zero > 0) {
     std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}); the mesh is written "
@@ -187,6 +199,10 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
   app.add_option("--rules", o->rules, "directory of *.rule files (default: the shipped rules/)");
   app.add_option("--strategy", o->strategy, "priority (default), random, sequence:RULE,RULE..., or a strategy file");
   app.add_option("--seed", o->seed, "seed of the random strategy")->each([o](const std::string&) { o->seed_given = true; });
+  app.add_option("--attempts", o->attempts,
+                 "weaves to try: when one gives no valid mesh, weave again with the random strategy, seeds 1, 2, ... "
+                 "(default 16; 1: only the strategy given)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
   app.add_option("--dot", o->dot_dir, "write the final STC and its sheet diagrams (DOT and SVG) into this directory");
   app.add_flag("--dot-steps", o->dot_steps, "also write one picture per rule application into DIR/steps");
   app.add_option("--trace", o->trace, "write one line per rule application to this file");

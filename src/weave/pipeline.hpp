@@ -21,12 +21,15 @@ struct MeshingResult {
   std::optional<ValidityReport> check;   ///< of `mesh`, against the surface
   SmoothingReport smoothing;
   std::string failure;                   ///< why there is no mesh, when the weave closed
-  double seconds = 0;
+  double seconds = 0;                    ///< of all attempts
+  std::size_t attempts = 1;              ///< weaves run (see WeaveOptions::attempts)
+  engine::Strategy strategy;             ///< of the last attempt, the one reported
   /// The mesh is written: closed and criteria 1-6 hold (geometry may still be bad).
   bool combinatorially_valid() const { return mesh && check && check->combinatorial_valid(); }
 };
 
-/// Weaves a validated, outward-oriented surface with `rules`. A rule that
+/// Weaves a validated, outward-oriented surface with `rules` (again, under
+/// other strategies, as WeaveOptions::attempts allows). A rule that
 /// fails while it runs throws engine::RuleError naming its file and line.
 MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const WeaveOptions& options);
 

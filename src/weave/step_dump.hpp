@@ -3,6 +3,7 @@
 // application, the elements it matched and made, and the diagram of every
 // sheet the step touched.
 #include <filesystem>
+#include <vector>
 
 #include "engine/engine.hpp"
 #include "src/stc/stc.hpp"
@@ -17,12 +18,15 @@ public:
   /// step-NNNN-sheet-K.dot (K: the sheet's rank, as in `loom stc`).
   void dump(const engine::Application& step, const stc::Stc& stc);
   std::size_t files_written() const { return files_; }
+  /// Removes every file written so far (a weave that starts again).
+  void clear();
 
 private:
   void emit(const std::string& stem, const std::string& dot);
   std::filesystem::path dir_;
   bool svg_;
   std::size_t files_ = 0;
+  std::vector<std::filesystem::path> written_;
 };
 
 }  // namespace loom::weave
