@@ -1,5 +1,6 @@
 // Criteria 1-3: cells, faces, doublets.
 #include <algorithm>
+#include <bit>
 
 #include "src/check/criteria.hpp"
 #include "src/check/key_numbering.hpp"
@@ -97,8 +98,74 @@ CriterionResult no_doublets(const HexMesh& mesh, const HexTopology& topo) {
       if (pairs++ == 0) first = fmt::format("hexes {} and {} share {} faces", h, across[i], shared);
     }
   }
-  if (pairs == 0) return passed(3);
-  return failed(3, pairs == 1 ? first : fmt::format("{} ({} pairs of hexes share more than one face)", first, pairs));
+  if (pairs > 0)
+    return failed(3, pairs == 1 ? first : fmt::format("{} ({} pairs of hexes share more than one face)", first, pairs));
+  return hexes_meet_properly(mesh);
+}
+
+namespace {
+
+constexpr std::array<std::array<int, 2>, 12> kHexEdges{
+    {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+
+/// Whether the corners `mask` of a hex (bit k: corner k) are one of its
+/// edges (2 corners) or faces (4 corners).
+bool is_edge_or_face(unsigned mask) {
+  if (std::popcount(mask) == 2) {
+    for (auto [a, b] : kHexEdges)
+      if (mask == ((1u << a) | (1u << b))) return true;
+    return false;
+  }
+  if (std::popcount(mask) != 4) return false;
+  for (int lf = 0; lf < 6; ++lf) {
+    unsigned face = 0;
+    for (int k : kHexFaceCorners[lf]) face |= 1u << k;
+    if (mask == face) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+CriterionResult hexes_meet_properly(const HexMesh& mesh) {
+  // Hexes at each node (CSR), then every pair meeting at some node.
+  const std::size_t nodes = mesh.points.size();
+  std::vector<std::uint32_t> start(nodes + 1, 0), at;
+  for (const Hex& hex : mesh.hexes)
+    for (auto n : hex) ++start[n + 1];
+  for (std::size_t n = 0; n < nodes; ++n) start[n + 1] += start[n];
+  at.resize(start[nodes]);
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::uint32_t h = 0; h < mesh.hexes.size(); ++h)
+    for (auto n : mesh.hexes[h]) at[fill[n]++] = h;
+  std::size_t bad = 0;
+  std::string first;
+  std::vector<std::pair<std::uint32_t, unsigned>> met;  // (other hex, corners of h it has)
+  for (std::uint32_t h = 0; h < mesh.hexes.size(); ++h) {
+    met.clear();
+    for (int k = 0; k < 8; ++k) {
+      auto n = mesh.hexes[h][k];
+      for (auto i = start[n]; i < start[n + 1]; ++i)
+        if (at[i] > h) met.emplace_back(at[i], 1u << k);
+    }
+    std::sort(met.begin(), met.end());
+    for (std::size_t i = 0; i < met.size();) {
+      std::uint32_t g = met[i].first;
+      unsigned mine = 0;
+      for (; i < met.size() && met[i].first == g; ++i) mine |= met[i].second;
+      if (std::popcount(mine) == 1) continue;
+      unsigned theirs = 0;
+      for (int k = 0; k < 8; ++k)
+        for (int j = 0; j < 8; ++j)
+          if ((mine >> j & 1u) && mesh.hexes[g][k] == mesh.hexes[h][j]) theirs |= 1u << k;
+      if (is_edge_or_face(mine) && is_edge_or_face(theirs)) continue;
+      if (bad++ == 0)
+        first = fmt::format("hexes {} and {} meet in {} nodes that are not one face, one edge or one node of both", h,
+                            g, std::popcount(mine));
+    }
+  }
+  if (bad == 0) return passed(3);
+  return failed(3, bad == 1 ? first : fmt::format("{} ({} such pairs)", first, bad));
 }
 
 }  // namespace loom::criteria

@@ -33,6 +33,11 @@ struct PillowCounts {
 /// edge of dS does not end in two faces of dS.
 PillowCounts insert_pillow(stc::Stc& stc, std::span<const Id> shrink_set);
 
+/// The shrink set that resolves the doublet of h1 and h2 (two hexes sharing
+/// two or more faces): h1, and the hexes across those faces of h1 that it
+/// does not share with h2 but that touch a face it does share.
+std::vector<Id> doublet_shrink_set(const stc::Stc& stc, Id h1, Id h2);
+
 /// The hexes having `node` as a corner (each once, in id order).
 std::vector<Id> hexes_at_node(const stc::Stc& stc, Id node);
 

@@ -58,6 +58,13 @@ engine::Actions weave_actions(stc::Stc& stc) {
   actions.add("pillow_hex", [&stc](engine::Graph&, std::span<const engine::Id> args) {
     insert_pillow(stc, args.first(1));
   });
+  // pillow_doublet(h1, h2): a pillow sheet around h1 and the hexes across
+  // h1's faces at the ends of the edges h1 shares with h2 (their faces
+  // there share two edges with h2's: without them in the set, a pillow hex
+  // would meet h2 in three nodes).
+  actions.add("pillow_doublet", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+    insert_pillow(stc, doublet_shrink_set(stc, args[0], args[1]));
+  });
   // split_pinched(n): one node per group of n's hexes that meet only at n;
   // each part's boundary flag is 1 exactly when it holds a boundary face.
   actions.add("split_pinched", [&stc](engine::Graph&, std::span<const engine::Id> args) {

@@ -1,0 +1,204 @@
+// The degeneracy and expansion rules of rules/, each on a tiny hand-built
+// state: the rule file is loaded as shipped and applied by the engine, and
+// the state after it is checked. With LOOM_DOC_PICTURES=DIR set, every case
+// also writes DIR/NAME-before.dot and DIR/NAME-after.dot (hexes and faces;
+// what the step made is highlighted), the pictures of docs/degeneracies.md
+// (scripts/degeneracy-pictures.sh renders them).
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "engine/dot.hpp"
+#include "engine/engine.hpp"
+#include "engine/rule_compiler.hpp"
+#include "src/check/hex_boundary.hpp"
+#include "src/check/validity.hpp"
+#include "src/gen/generators.hpp"
+#include "src/stc/build.hpp"
+#include "src/stc/primal.hpp"
+#include "src/weave/weave.hpp"
+#include "tests/support.hpp"
+
+using namespace loom;
+
+namespace {
+
+/// The shipped rules named (file names without .rule), as the engine loads them.
+std::vector<engine::Rule> shipped(std::initializer_list<const char*> names) {
+  std::vector<engine::Rule> out;
+  for (const char* name : names) {
+    auto file = weave::default_rules_dir() / (std::string(name) + ".rule");
+    auto rules = engine::compile_rules(test::slurp(file), file.string(), *stc::StcSchema::get().schema);
+    out.insert(out.end(), rules.begin(), rules.end());
+  }
+  return out;
+}
+
+/// Runs `rules` until none applies; returns the applications by rule name.
+std::map<std::string, std::size_t> run(stc::Stc& s, std::vector<engine::Rule> rules, std::size_t max_steps = 1000) {
+  engine::Engine eng(s.graph(), std::move(rules), weave::weave_actions(s), engine::Strategy::parse("priority"));
+  for (std::size_t i = 0; i < max_steps && eng.step(); ++i) REQUIRE(s.check_invariants() == "");
+  return eng.applications();
+}
+
+/// Hexes and faces as DOT; elements with ids from `first_new` on are highlighted.
+void picture(const stc::Stc& s, const std::string& name, engine::Id first_new = engine::no_element) {
+  const char* dir = std::getenv("LOOM_DOC_PICTURES");
+  if (!dir) return;
+  const auto& g = s.graph();
+  const auto& ids = s.ids();
+  engine::DotStyle style;
+  style.graph_name = name;
+  style.layout = "neato";
+  for (auto kind : {ids.hex, ids.face})
+    for (engine::Id e : g.members(kind)) {
+      style.only.insert(e);
+      if (first_new != engine::no_element && e >= first_new) style.highlight.insert(e);
+    }
+  style.label = [&](engine::Id e) -> std::string {
+    if (g.kind(e) == ids.hex) return fmt::format("hex {}", e);
+    return s.is_boundary(e) ? fmt::format("quad {}", s.boundary_index(e)) : fmt::format("face {}", e);
+  };
+  std::ofstream out(std::filesystem::path(dir) / (name + ".dot"));
+  engine::write_dot(out, g, style);
+}
+
+ValidityReport dualize_and_check(const stc::Stc& s, const QuadSurface& surface) {
+  HexMesh mesh = stc::to_hex_mesh(s);
+  return check_hex_mesh(mesh, &surface);
+}
+
+/// Two hexes sharing two faces (VTK faces 0154 and 0374 of the first): a doublet.
+HexMesh doublet() {
+  HexMesh m = gen::hexgrid(1, 1, 1);
+  const Hex& c = m.hexes[0];
+  m.points.push_back({1, 1, -1});
+  m.points.push_back({1, 1, 2});
+  m.hexes.push_back({c[0], c[1], 8, c[3], c[4], c[5], 9, c[7]});
+  return m;
+}
+
+/// Every edge of a front face lies in exactly two front faces (the front is
+/// a closed surface), counted with multiplicity.
+bool front_is_closed(const stc::Stc& s) {
+  std::map<engine::Id, int> uses;
+  for (engine::Id f : s.graph().members(s.ids().face))
+    if (s.is_whisker(f))
+      for (unsigned k = 0; k < 4; ++k) ++uses[s.face_edge(f, k)];
+  for (auto [e, n] : uses)
+    if (n != 2) return false;
+  return !uses.empty();
+}
+
+/// F4: four quads, one loop crossing itself in all four; both valence-2
+/// nodes sit between two faces whose seam would fold the other two.
+QuadSurface f4() {
+  QuadSurface s;
+  s.points = {{0, 0, 1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, -1}};
+  s.quads = {{1, 3, 2, 0}, {5, 3, 1, 4}, {2, 4, 1, 0}, {5, 4, 2, 3}};
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("pillow_doublet: two hexes sharing two faces get a pillow around one of them") {
+  HexMesh mesh = doublet();
+  QuadSurface surface = hex_mesh_boundary(mesh);
+  stc::Stc s = stc::build_from_hex_mesh(mesh);
+  auto before = check_hex_mesh(mesh, &surface);
+  REQUIRE(before.first_failure());
+  CHECK(before.first_failure()->number == 3);  // the doublet
+  picture(s, "doublet-before");
+  engine::Id first_new = s.graph().id_bound();
+  auto applied = run(s, shipped({"pillow_doublet"}));
+  CHECK(applied["pillow_doublet"] == 1);
+  picture(s, "doublet-after", first_new);
+  CHECK(s.hexes() == 8);
+  // The doublet is gone: no two hexes share two faces, and the edge they
+  // shared has three hexes. What is left is the surface's own: its quads at
+  // the doublet's ends share two edges, so the hexes on them still meet in
+  // three nodes (criterion 3's second half) until hexes are woven beyond them.
+  for (engine::Id h : s.graph().members(s.ids().hex)) {
+    std::map<engine::Id, int> across;
+    for (unsigned i = 0; i < 6; ++i)
+      if (engine::Id o = s.across(s.hex_face(h, i), h); o != engine::no_element) CHECK(++across[o] == 1);
+  }
+  auto after = dualize_and_check(s, surface);
+  REQUIRE(after.first_failure());
+  CHECK(after.first_failure()->number == 3);
+  CHECK(after.first_failure()->detail.find("meet in 3 nodes") != std::string::npos);
+}
+
+TEST_CASE("seam_through leaves a through-3-cell; pillow_through_cell pillows it and splits the node") {
+  // A U of five hexes whose tips share the node (1,2,0) in place of their own
+  // corners (1,2,0) and (2,2,0), as seam_through leaves it: boundary 2.
+  HexMesh u = gen::hexgrid(3, 2, 1);
+  u.hexes.erase(u.hexes.begin() + 4);
+  QuadSurface surface = hex_mesh_boundary(u);
+  HexMesh pinched = u;
+  for (auto& p : pinched.hexes[4])
+    if (p == 10) p = 9;
+  stc::Stc s = stc::build_from_hex_mesh(pinched);
+  const auto& ids = s.ids();
+  for (stc::Id f : s.graph().members(ids.face)) {
+    if (!s.is_boundary(f) || s.graph().get(s.face_cell(f, 0), ids.hex_source) != 4) continue;
+    for (unsigned k = 0; k < 4; ++k)
+      if (s.graph().get(s.face_node(f, k), ids.node_point) == 9) {
+        s.boundary_points()[static_cast<std::size_t>(s.boundary_index(f))][k] = 10;
+        s.graph().set(s.face_node(f, k), ids.node_boundary, 2);
+      }
+  }
+  CHECK_FALSE(dualize_and_check(s, surface).combinatorial_valid());
+  picture(s, "through-cell-before");
+  engine::Id first_new = s.graph().id_bound();
+  auto applied = run(s, shipped({"pillow_through_cell"}));
+  CHECK(applied["pillow_through_cell"] == 1);
+  picture(s, "through-cell-after", first_new);
+  CHECK(s.hexes() == 5 + 12);
+  auto after = dualize_and_check(s, surface);
+  CHECK(after.combinatorial_valid());
+}
+
+TEST_CASE("seam_through identifies two boundary nodes and counts them; seam never does") {
+  // On the 2 x 1 x 1 box, after the first cross at a corner, the seam next to
+  // it identifies the new node with a boundary node: an ordinary seam. A
+  // seam of two boundary nodes needs a front where both far nodes are on the
+  // boundary: two stacked cubes crossed at a corner of the far cube.
+  stc::Stc s = stc::build_from_surface(gen::box(2, 1, 1));
+  auto applied = run(s, shipped({"cross", "seam"}));
+  CHECK(applied["seam_through"] == 0);
+  CHECK(s.whiskers() == 0);
+  for (stc::Id n : s.graph().members(s.ids().node)) CHECK(s.graph().get(n, s.ids().node_boundary) <= 1);
+
+  // F4: the seams at both valence-2 nodes would fold a face (a knife); the
+  // seam rules refuse them, so no rule of the two applies.
+  stc::Stc t = stc::build_from_surface(f4());
+  picture(t, "knife-refused");
+  auto none = run(t, shipped({"seam", "seam_through"}));
+  CHECK(none.empty());
+  CHECK(t.whiskers() == 4);
+}
+
+TEST_CASE("pillow_face and wedge change a front that cross and seam leave alone, and it stays closed") {
+  for (const char* opener : {"pillow_face", "wedge"}) {
+    CAPTURE(opener);
+    std::string name = opener;
+    // F4 is where the weave of Schneiders' pyramid gets stuck.
+    stc::Stc s = stc::build_from_surface(f4());
+    picture(s, name + "-before");
+    engine::Id first_new = s.graph().id_bound();
+    engine::Engine eng(s.graph(), shipped({opener}), weave::weave_actions(s), engine::Strategy::parse("priority"));
+    REQUIRE(eng.step());
+    CHECK(s.check_invariants() == "");
+    picture(s, name + "-after", first_new);
+    CHECK(s.hexes() == 1);
+    // pillow_face: 1 front face becomes 5; wedge: 2 become 4.
+    CHECK(s.whiskers() == (name == "pillow_face" ? 8u : 6u));
+    CHECK(front_is_closed(s));
+    for (engine::Id n : s.graph().members(s.ids().node)) CHECK(s.graph().get(n, s.ids().node_point) >= 0);
+  }
+}
