@@ -2,128 +2,23 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
 
 #include <fmt/format.h>
 
+#include "src/weave/pillow_detail.hpp"
+
 namespace loom::weave {
 
-using engine::Graph;
-using stc::Stc;
-
-namespace {
-
-/// Union-find over small dense indices.
-struct Groups {
-  std::vector<std::size_t> parent;
-  std::size_t add() {
-    parent.push_back(parent.size());
-    return parent.size() - 1;
-  }
-  std::size_t find(std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
-};
-
-std::uint64_t pair_key(Id a, Id b) { return (std::uint64_t{a} << 32) | b; }
-
-/// The faces pointing at `target` through `port` (each once).
-std::vector<Id> owners_via(const Graph& g, Id target, engine::PortId port) {
-  std::vector<Id> out;
-  for (engine::SlotId s : g.incoming(target))
-    if (g.slot_port(s) == port) out.push_back(g.slot_owner(s));
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
-Vec3 point_of(const Stc& stc, Id node) {
-  std::int32_t p = stc.graph().get(node, stc.ids().node_point);
-  return p >= 0 ? stc.points()[static_cast<std::size_t>(p)] : Vec3{0, 0, 0};
-}
-
-Vec3 hex_centroid(const Stc& stc, Id hex) {
-  Vec3 sum{0, 0, 0};
-  for (unsigned i = 0; i < 6; ++i)
-    for (unsigned k = 0; k < 4; ++k) sum = sum + point_of(stc, stc.face_node(stc.hex_face(hex, i), k));
-  return (1.0 / 24.0) * sum;
-}
-
-/// The local components of S around one element x (a node or an edge): the
-/// hexes of S at x, grouped by the faces at x that have S on both sides.
-/// Returns hex -> component index (dense, per element).
-std::map<Id, std::size_t> components_at(const Stc& stc, const std::vector<Id>& faces_at_x,
-                                        const std::unordered_set<Id>& in_s) {
-  std::map<Id, std::size_t> index;
-  Groups groups;
-  auto idx = [&](Id h) {
-    auto [it, fresh] = index.try_emplace(h, 0);
-    if (fresh) it->second = groups.add();
-    return it->second;
-  };
-  for (Id f : faces_at_x) {
-    Id a = stc.face_cell(f, 0), b = stc.face_cell(f, 1);
-    bool sa = a != no_element && in_s.count(a), sb = b != no_element && in_s.count(b);
-    if (sa) idx(a);
-    if (sb) idx(b);
-    if (sa && sb) groups.unite(idx(a), idx(b));
-  }
-  std::map<std::size_t, std::size_t> dense;
-  std::map<Id, std::size_t> out;
-  for (auto& [h, i] : index) out[h] = dense.try_emplace(groups.find(i), dense.size()).first->second;
-  return out;
-}
-
-}  // namespace
-
-std::vector<Id> doublet_shrink_set(const Stc& stc, Id h1, Id h2) {
-  std::vector<Id> shared, set{h1};
-  for (unsigned i = 0; i < 6; ++i)
-    if (stc.across(stc.hex_face(h1, i), h1) == h2) shared.push_back(stc.hex_face(h1, i));
-  auto nodes_of = [&](Id f) {
-    std::vector<Id> n;
-    for (unsigned k = 0; k < 4; ++k) n.push_back(stc.face_node(f, k));
-    return n;
-  };
-  std::vector<Id> shared_nodes;
-  for (Id f : shared)
-    for (Id n : nodes_of(f)) shared_nodes.push_back(n);
-  for (unsigned i = 0; i < 6; ++i) {
-    Id f = stc.hex_face(h1, i);
-    if (std::find(shared.begin(), shared.end(), f) != shared.end()) continue;
-    // Faces of h1 meeting the shared faces in an edge only are left out:
-    // a face holding more than two shared nodes is one that meets two of them.
-    auto n = nodes_of(f);
-    auto touching = std::count_if(n.begin(), n.end(), [&](Id x) {
-      return std::find(shared_nodes.begin(), shared_nodes.end(), x) != shared_nodes.end();
-    });
-    Id other = stc.across(f, h1);
-    if (touching > 2 && other != no_element && other != h2 &&
-        std::find(set.begin(), set.end(), other) == set.end())
-      set.push_back(other);
-  }
-  return set;
-}
-
-std::vector<Id> hexes_at_node(const Stc& stc, Id node) {
-  std::vector<Id> out;
-  for (Id f : owners_via(stc.graph(), node, stc.ids().face_node))
-    for (unsigned side = 0; side < 2; ++side)
-      if (Id h = stc.face_cell(f, side); h != no_element) out.push_back(h);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
+using namespace detail;
 
 PillowCounts insert_pillow(Stc& stc, std::span<const Id> shrink_set) {
   Graph& g = stc.graph();
   const stc::StcSchema& ids = stc.ids();
   std::unordered_set<Id> in_s(shrink_set.begin(), shrink_set.end());
+  auto in_set = [&](Id h) { return in_s.count(h) != 0; };
 
   // dS: faces with S on exactly one side, and the S hex behind each.
   std::vector<std::pair<Id, Id>> shell;  // (face, its hex in S)
@@ -152,9 +47,9 @@ PillowCounts insert_pillow(Stc& stc, std::span<const Id> shrink_set) {
   // Local components of S around every node and edge of dS, checked before
   // anything changes: each sector of S around an edge must end in two faces of dS.
   std::unordered_map<Id, std::map<Id, std::size_t>> node_parts, edge_parts;
-  for (Id x : nodes) node_parts[x] = components_at(stc, owners_via(g, x, ids.face_node), in_s);
+  for (Id x : nodes) node_parts[x] = components_at(stc, owners_via(g, x, ids.face_node), in_set);
   for (Id e : edges) {
-    auto parts = components_at(stc, owners_via(g, e, ids.face_edge), in_s);
+    auto parts = components_at(stc, owners_via(g, e, ids.face_edge), in_set);
     std::map<std::size_t, int> ends;
     for (auto& [f, h] : shell)
       if (stc.slot_in_face(f, e) < 4) ++ends[parts.at(h)];
@@ -303,94 +198,6 @@ PillowCounts insert_pillow(Stc& stc, std::span<const Id> shrink_set) {
     g.link(q, ids.face_chord, 0, it->second);
   }
   return counts;
-}
-
-std::size_t split_pinched_node(Stc& stc, Id node) {
-  Graph& g = stc.graph();
-  const stc::StcSchema& ids = stc.ids();
-  std::vector<Id> faces = owners_via(g, node, ids.face_node);
-  std::map<Id, std::size_t> index;
-  Groups groups;
-  auto idx = [&](Id h) {
-    auto [it, fresh] = index.try_emplace(h, 0);
-    if (fresh) it->second = groups.add();
-    return it->second;
-  };
-  for (Id f : faces) {
-    Id a = stc.face_cell(f, 0), b = stc.face_cell(f, 1);
-    if (a != no_element) idx(a);
-    if (b != no_element) idx(b);
-    if (a != no_element && b != no_element) groups.unite(idx(a), idx(b));
-  }
-  // Group of each face at the node, in the order the groups first appear.
-  std::map<std::size_t, std::size_t> dense;
-  std::vector<std::size_t> group_of_face;
-  for (Id f : faces) {
-    Id h = stc.face_cell(f, 0) != no_element ? stc.face_cell(f, 0) : stc.face_cell(f, 1);
-    if (h == no_element) throw std::runtime_error(fmt::format("split: face {} at node {} has no hex", f, node));
-    group_of_face.push_back(dense.try_emplace(groups.find(index.at(h)), dense.size()).first->second);
-  }
-  const std::size_t parts = dense.size();
-  if (parts < 2) {
-    bool boundary = std::any_of(faces.begin(), faces.end(), [&](Id f) { return stc.is_boundary(f); });
-    g.set(node, ids.node_boundary, boundary ? 1 : 0);
-    return 0;
-  }
-
-  std::vector<Id> part_node(parts, node);
-  for (std::size_t p = 1; p < parts; ++p) part_node[p] = g.add(ids.node);
-  // Position and boundary flag of each part, from a boundary face it holds.
-  for (std::size_t p = 0; p < parts; ++p) {
-    std::int32_t point = g.get(node, ids.node_point), boundary = 0;
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-      if (group_of_face[i] != p || !stc.is_boundary(faces[i])) continue;
-      for (unsigned k = 0; k < 4; ++k)
-        if (stc.face_node(faces[i], k) == node)
-          point = stc.boundary_points().at(static_cast<std::size_t>(stc.boundary_index(faces[i])))[k];
-      boundary = 1;
-      break;
-    }
-    g.set(part_node[p], ids.node_point, point);
-    g.set(part_node[p], ids.node_boundary, boundary);
-  }
-  // Edges at the node: used by one part, they follow it; by several, each
-  // part but the first gets a copy.
-  std::map<std::pair<Id, std::size_t>, Id> edge_for;
-  std::map<Id, std::size_t> first_part;
-  for (std::size_t i = 0; i < faces.size(); ++i)
-    for (unsigned k = 0; k < 4; ++k) {
-      Id e = stc.face_edge(faces[i], k);
-      if (stc.edge_node(e, 0) != node && stc.edge_node(e, 1) != node) continue;
-      first_part.try_emplace(e, group_of_face[i]);
-    }
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    Id f = faces[i];
-    std::size_t p = group_of_face[i];
-    for (unsigned k = 0; k < 4; ++k) {
-      Id e = stc.face_edge(f, k);
-      if (stc.edge_node(e, 0) != node && stc.edge_node(e, 1) != node) continue;
-      auto [it, fresh] = edge_for.try_emplace({e, p}, e);
-      if (fresh && first_part.at(e) != p) {
-        Id copy = g.add(ids.edge);
-        g.link(copy, ids.edge_node, 0, stc.edge_node(e, 0));
-        g.link(copy, ids.edge_node, 1, stc.edge_node(e, 1));
-        g.link(copy, ids.edge_sheet, 0, stc.edge_sheet(e));
-        it->second = copy;
-      }
-    }
-  }
-  for (auto& [key, e] : edge_for)
-    for (unsigned k = 0; k < 2; ++k)
-      if (stc.edge_node(e, k) == node) g.link(e, ids.edge_node, k, part_node[key.second]);
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    std::size_t p = group_of_face[i];
-    for (unsigned k = 0; k < 4; ++k) {
-      Id f = faces[i];
-      if (Id e = stc.face_edge(f, k); edge_for.count({e, p})) g.link(f, ids.face_edge, k, edge_for.at({e, p}));
-      if (stc.face_node(f, k) == node) g.link(f, ids.face_node, k, part_node[p]);
-    }
-  }
-  return parts - 1;
 }
 
 }  // namespace loom::weave
