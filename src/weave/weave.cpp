@@ -16,38 +16,39 @@ std::filesystem::path default_rules_dir() {
   return LOOM_RULES_DIR;
 }
 
+namespace {
+
+/// The position of a node, for the placement actions (which need one).
+Vec3 placed(const stc::Stc& stc, engine::Id node, const char* action) {
+  std::int32_t p = stc.graph().get(node, stc.ids().node_point);
+  if (p < 0) throw std::runtime_error(fmt::format("{}: node {} has no position yet", action, node));
+  return stc.points()[static_cast<std::size_t>(p)];
+}
+
+void place(stc::Stc& stc, engine::Id node, Vec3 at) {
+  stc.graph().set(node, stc.ids().node_point, static_cast<std::int32_t>(stc.points().size()));
+  stc.points().push_back(at);
+}
+
+}  // namespace
+
 engine::Actions weave_actions(stc::Stc& stc) {
   engine::Actions actions;
   // place_hex_corner(n, v, a, b, c): n is the corner of the hex at v opposite
   // v, whose edges from v run to a, b and c: n = a + b + c - 2v.
-  actions.add("place_hex_corner", [&stc](engine::Graph& g, std::span<const engine::Id> args) {
-    const auto& ids = stc.ids();
-    auto at = [&](engine::Id node) {
-      std::int32_t p = g.get(node, ids.node_point);
-      if (p < 0) throw std::runtime_error(fmt::format("place_hex_corner: node {} has no position yet", node));
-      return stc.points()[static_cast<std::size_t>(p)];
-    };
-    Vec3 v = at(args[1]);
-    Vec3 n = at(args[2]) + at(args[3]) + at(args[4]) - 2.0 * v;
-    g.set(args[0], ids.node_point, static_cast<std::int32_t>(stc.points().size()));
-    stc.points().push_back(n);
+  actions.add("place_hex_corner", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+    auto at = [&](engine::Id node) { return placed(stc, node, "place_hex_corner"); };
+    place(stc, args[0], at(args[2]) + at(args[3]) + at(args[4]) - 2.0 * at(args[1]));
   });
   // place_off_face(n, a, b, d): n is the corner above a of a hex standing on
   // a front face a b . d (which faces away from the hex), at the face's
   // mean edge length from a.
-  actions.add("place_off_face", [&stc](engine::Graph& g, std::span<const engine::Id> args) {
-    const auto& ids = stc.ids();
-    auto at = [&](engine::Id node) {
-      std::int32_t p = g.get(node, ids.node_point);
-      if (p < 0) throw std::runtime_error(fmt::format("place_off_face: node {} has no position yet", node));
-      return stc.points()[static_cast<std::size_t>(p)];
-    };
+  actions.add("place_off_face", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+    auto at = [&](engine::Id node) { return placed(stc, node, "place_off_face"); };
     Vec3 a = at(args[1]), ab = at(args[2]) - a, ad = at(args[3]) - a;
     Vec3 away = cross(ab, ad);
     double length = 0.5 * (norm(ab) + norm(ad)), size = norm(away);
-    Vec3 n = size > 0 ? a - (length / size) * away : a;
-    g.set(args[0], ids.node_point, static_cast<std::int32_t>(stc.points().size()));
-    stc.points().push_back(n);
+    place(stc, args[0], size > 0 ? a - (length / size) * away : a);
   });
   // pillow_star(n): a pillow sheet around every hex at node n.
   actions.add("pillow_star", [&stc](engine::Graph&, std::span<const engine::Id> args) {
