@@ -34,8 +34,9 @@ struct PillowCounts {
 PillowCounts insert_pillow(stc::Stc& stc, std::span<const Id> shrink_set);
 
 /// The shrink set that resolves the doublet of h1 and h2 (two hexes sharing
-/// two or more faces): h1, and the hexes across those faces of h1 that it
-/// does not share with h2 but that touch a face it does share.
+/// two or more faces): h1 and the hexes across its faces that hold three
+/// nodes of the shared faces (their faces there share two edges with h2's);
+/// h2's side instead when one of h1's such faces is a boundary quad.
 std::vector<Id> doublet_shrink_set(const stc::Stc& stc, Id h1, Id h2);
 
 /// The hexes having `node` as a corner (each once, in id order).
