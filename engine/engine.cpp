@@ -72,7 +72,10 @@ void Engine::offer(std::size_t r, Id anchor) {
     return;
   }
   if (!rule.order) {  // no key to compute: it is matched once, when chosen
-    st.queue.push({0, anchor});
+    // Queued at most once: a rule whose turn comes late (a low priority)
+    // would otherwise meet every change since as a duplicate.
+    if (st.pooled.size() <= anchor) st.pooled.resize(g_.id_bound() + 1024, false);
+    if (!st.pooled[anchor]) st.pooled[anchor] = true, st.queue.push({0, anchor});
     return;
   }
   ++counters_.match_attempts;
@@ -98,6 +101,7 @@ bool Engine::pop_best(std::size_t r, Entry& entry, Match& m) {
   while (!queue.empty()) {
     entry = queue.top();
     queue.pop();
+    if (!rule.order) state_[r].pooled[entry.anchor] = false;
     ++counters_.match_attempts;
     if (!g_.alive(entry.anchor) || !matcher_.first_at(rule, entry.anchor, m)) continue;
     std::int64_t key = rule.order ? matcher_.evaluate(*rule.order, m) : 0;
@@ -176,7 +180,10 @@ std::vector<Match> Engine::choices(std::size_t limit) {
         keep.push_back(entry);
         if (!seen) out.push_back(m);
       }
-      for (const Entry& e : keep) state_[r].queue.push(e);
+      for (const Entry& e : keep) {
+        if (!rule.order) state_[r].pooled[e.anchor] = true;
+        state_[r].queue.push(e);
+      }
     }
     if (!out.empty()) return out;
   }

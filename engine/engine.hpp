@@ -80,7 +80,7 @@ private:
   struct RuleState {
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;  ///< priority, sequence
     std::vector<Id> pool;                                                 ///< random
-    std::vector<bool> pooled;
+    std::vector<bool> pooled;    ///< in `pool` (random) or in `queue` (a rule without order)
     bool enabled = true;
     std::int64_t rank = 0;  ///< higher first
     std::vector<std::vector<int>> relevant;  ///< relevance_key -> variables
