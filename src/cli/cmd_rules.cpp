@@ -1,5 +1,6 @@
 // `loom rules explain FILE|DIR` and `loom rules list [DIR]`: what the engine
 // makes of rule files, without weaving anything.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -49,9 +50,11 @@ loom::cli::Register reg{{"rules", [](CLI::App& app) {
   return std::function<int()>([path, explain] {
     auto rules = load(*path);
     const auto& schema = *loom::stc::StcSchema::get().schema;
+    std::size_t width = 16;
+    for (const auto& r : rules) width = std::max(width, r.name.size());
     for (const auto& r : rules) {
       if (explain->parsed()) std::cout << loom::engine::explain(r, schema) << "\n";
-      else std::cout << fmt::format("{:<16} priority {:>4}  {}\n", r.name, r.priority, r.file);
+      else std::cout << fmt::format("{:<{}} priority {:>4}  {}\n", r.name, width, r.priority, r.file);
     }
     return 0;
   });
