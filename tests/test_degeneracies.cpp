@@ -20,6 +20,7 @@
 #include "src/gen/generators.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
+#include "src/weave/pipeline.hpp"
 #include "src/weave/weave.hpp"
 #include "tests/support.hpp"
 
@@ -200,5 +201,18 @@ TEST_CASE("pillow_face and wedge change a front that cross and seam leave alone,
     CHECK(s.whiskers() == (name == "pillow_face" ? 8u : 6u));
     CHECK(front_is_closed(s));
     for (engine::Id n : s.graph().members(s.ids().node)) CHECK(s.graph().get(n, s.ids().node_point) >= 0);
+  }
+}
+
+TEST_CASE("pillowing the through-cells of degenerate weaves keeps the STC invariants") {
+  // Weaves where a pillow sheet met edges the weave had pinched (hexes round
+  // one edge in two cycles, or an edge used inside and outside the shrink
+  // set without lying on its boundary): the pillow once broke invariant 3.
+  auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  for (auto [faces, seed] : {std::pair{26, 2}, std::pair{38, 1}}) {
+    CAPTURE(faces);
+    weave::WeaveOptions options;
+    options.attempts = 2;
+    CHECK_NOTHROW(weave::mesh_surface(gen::randquad(faces, std::uint64_t(seed)), rules, options));
   }
 }

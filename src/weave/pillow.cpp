@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -107,18 +108,42 @@ PillowCounts insert_pillow(Stc& stc, std::span<const Id> shrink_set) {
       Id f = stc.hex_face(h, i);
       if (!shell_faces.count(f) && seen.insert(f).second) inside_faces.emplace_back(f, h);
     }
-  std::vector<std::pair<Id, Id>> inside_edges;
+  // An edge inside S follows the copies of its ends that the faces using it
+  // see; when its hexes lie in two local components at an end (an edge the
+  // weave pinched), each pair of ends gets its own copy of the edge.
+  std::unordered_map<Id, std::pair<Id, Id>> ends_before;
   for (auto [f, h] : inside_faces)
     for (unsigned k = 0; k < 4; ++k)
-      if (Id e = stc.face_edge(f, k); !is_shell_edge(e) && seen.insert(e).second) inside_edges.emplace_back(e, h);
-  for (auto [e, h] : inside_edges)
-    for (unsigned k = 0; k < 2; ++k)
-      if (Id x = stc.edge_node(e, k); is_shell_node(x)) g.link(e, ids.edge_node, k, inner_of_node(x, h));
+      if (Id e = stc.face_edge(f, k); !is_shell_edge(e)) ends_before.try_emplace(e, stc.edge_node(e, 0), stc.edge_node(e, 1));
+  std::map<std::tuple<Id, Id, Id>, Id> inside_edge;  // (edge, end 0, end 1) -> the edge to use
+  // An edge that faces outside S use too (which a degenerate weave allows
+  // without it being on dS) is never moved: S's faces get copies.
+  std::unordered_set<Id> inside(seen.begin(), seen.end()), reused;
+  for (auto& [e, ends] : ends_before)
+    for (engine::SlotId sl : g.incoming(e))
+      if (g.slot_port(sl) == ids.face_edge && !inside.count(g.slot_owner(sl))) reused.insert(e);
+  auto inner_end = [&](Id x, Id h) { return is_shell_node(x) ? inner_of_node(x, h) : x; };
   for (auto [f, h] : inside_faces)
     for (unsigned k = 0; k < 4; ++k) {
-      if (Id x = stc.face_node(f, k); is_shell_node(x)) g.link(f, ids.face_node, k, inner_of_node(x, h));
-      if (Id e = stc.face_edge(f, k); is_shell_edge(e)) g.link(f, ids.face_edge, k, inner_of_edge(e, h));
+      Id e = stc.face_edge(f, k);
+      if (is_shell_edge(e)) {
+        g.link(f, ids.face_edge, k, inner_of_edge(e, h));
+        continue;
+      }
+      auto [x0, x1] = ends_before.at(e);
+      Id end0 = inner_end(x0, h), end1 = inner_end(x1, h);
+      auto [it, fresh] = inside_edge.try_emplace({e, end0, end1}, no_element);
+      if (fresh) {
+        it->second = reused.insert(e).second ? e : g.add(ids.edge);
+        g.link(it->second, ids.edge_node, 0, end0);
+        g.link(it->second, ids.edge_node, 1, end1);
+        g.link(it->second, ids.edge_sheet, 0, stc.edge_sheet(e));
+      }
+      g.link(f, ids.face_edge, k, it->second);
     }
+  for (auto [f, h] : inside_faces)
+    for (unsigned k = 0; k < 4; ++k)
+      if (Id x = stc.face_node(f, k); is_shell_node(x)) g.link(f, ids.face_node, k, inner_of_node(x, h));
 
   // One pillow hex per face of dS, between the face and its inner copy.
   std::unordered_map<std::uint64_t, Id> side_face;  // (edge, component) -> face
