@@ -17,7 +17,8 @@
 // Attributes: face.boundary (index of the boundary quad it is, or -1),
 // face.layer (0 on the boundary; a face made by a weave is one layer deeper
 // than the faces it was made from), node.point (index into points(), or -1
-// while unplaced), node.boundary (1 on the boundary surface), hex.source (index
+// while unplaced), node.boundary (1 on the boundary surface; the number of
+// surface nodes it stands for once seam_through has merged some), hex.source (index
 // in the hex mesh it was built from, or -1), sheet.self (1 if
 // self-intersecting), chord.self (1 if it passes a hex twice or lies twice on
 // one sheet).

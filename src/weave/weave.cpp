@@ -55,10 +55,6 @@ engine::Actions weave_actions(stc::Stc& stc) {
     auto star = hexes_at_node(stc, args[0]);
     insert_pillow(stc, star);
   });
-  // pillow_hex(h): a pillow sheet around hex h alone.
-  actions.add("pillow_hex", [&stc](engine::Graph&, std::span<const engine::Id> args) {
-    insert_pillow(stc, args.first(1));
-  });
   // pillow_doublet(h1, h2): a pillow sheet around h1 and the hexes across
   // h1's faces at the ends of the edges h1 shares with h2 (their faces
   // there share two edges with h2's: without them in the set, a pillow hex
