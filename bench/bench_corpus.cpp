@@ -267,15 +267,17 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
     r.steps = m.weave.steps;
     r.backtracks = m.weave.backtracks;
     r.whiskers_left = m.weave.whiskers_left;
-    r.hexes = m.stc.hexes();
+    r.hexes = m.stc.hexes() + m.boundary_layer.hexes_added;
     // Degeneracies met: through-3-cells left by seam_through, doublets
-    // pillowed; pillows: every pillow sheet inserted (pillow_* rules).
+    // pillowed; pillows: every pillow sheet inserted (pillow_* rules, and
+    // the boundary layer when the pipeline pillowed it).
     std::size_t degeneracies = 0, pillows = 0;
     for (const auto& [name, n] : m.weave.applications) {
       if (name == "seam_through" || name == "pillow_doublet") degeneracies += n;
       if (name.rfind("pillow_", 0) == 0 && name != "pillow_face") pillows += n;
     }
     r.degeneracies = std::to_string(degeneracies);
+    if (m.boundary_layer.hexes_added > 0) ++pillows;
     r.pillows = std::to_string(pillows);
     for (const auto& [name, n] : m.weave.applications) {
       if (name == "cross") r.cross = n;
@@ -296,6 +298,8 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
       r.note = c ? fmt::format("criterion {} ({}): {}", c->number, c->name, c->detail) : "invalid";
     } else if (m.check && !m.check->valid())
       r.note = fmt::format("{} hexes with scaled Jacobian <= 0", m.check->quality.below_zero);
+    else if (m.boundary_layer.hexes_added > 0)
+      r.note = fmt::format("boundary layer pillowed (+{} hexes)", m.boundary_layer.hexes_added);
     // An independent second opinion on every mesh: the pipeline must never
     // report success on a mesh the checker rejects.
     if (m.mesh) {
@@ -306,7 +310,7 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
         for (std::size_t h = 0; h < m.mesh->hexes.size() && bad.empty(); ++h)
           if (!(scaled_jacobian(*m.mesh, h) > 0)) bad = fmt::format("pipeline says valid, hex {} has SJ <= 0", h);
       if (r.closed && r.comb_valid && r.hexes != m.mesh->hexes.size())
-        bad = fmt::format("STC has {} hexes, mesh {}", r.hexes, m.mesh->hexes.size());
+        bad = fmt::format("STC and boundary layer have {} hexes, mesh {}", r.hexes, m.mesh->hexes.size());
       r.recheck = bad.empty() ? "ok" : "MISMATCH: " + bad;
     }
   } catch (const Timeout& t) {

@@ -178,18 +178,6 @@ TEST_CASE("the cubespheres come out valid through the pipeline") {
   }
 }
 
-TEST_CASE("the cylinder's only invalid hexes are the ones flattened by its caps") {
-  auto r = weave::mesh_surface(gen::cylinder(4, 6), shipped_rules(), {});
-  REQUIRE_MESSAGE(r.mesh.has_value(), r.failure);
-  REQUIRE(r.check.has_value());
-  CHECK(r.check->combinatorial_valid());
-  CHECK(r.check->quality.below_zero == r.smoothing.locked_invalid);
-  // Before placement the weave leaves more hexes <= 0 than the locked ones.
-  CHECK(r.smoothing.below_zero_before > r.smoothing.locked_invalid);
-  MESSAGE("cylinder 4 6: " << r.check->quality.below_zero << " hexes <= 0, all with a flat corner of boundary nodes; "
-                           << r.check->quality.below_0_2 << " < 0.2");
-}
-
 TEST_CASE("perturbed grids are untangled, from the harmonic start and from the input") {
   struct Case {
     int a, b, c;

@@ -97,6 +97,7 @@ nlohmann::json report_json(const Options& o, const loom::weave::MeshingResult& r
     j["below_zero"] = r.check->quality.below_zero;
     j["below_0_2"] = r.check->quality.below_0_2;
   }
+  j["boundary_layer_hexes"] = r.boundary_layer.hexes_added;
   j["smoothing_iterations"] = r.smoothing.iterations;
   j["match_attempts"] = r.weave.counters.match_attempts;
   j["seconds"] = r.seconds;
@@ -179,10 +180,12 @@ int run(const Options& o) {
   std::string attempt = result.attempts == 1 ? std::string()
                         : fmt::format(" (attempt {}: strategy {} seed {})", result.attempts,
                                       result.strategy.name(), result.strategy.seed);
-  std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}; min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
+  std::string layer = result.boundary_layer.hexes_added == 0
+                          ? std::string()
+                          : fmt::format(", boundary layer pillowed (+{} hexes)", result.boundary_layer.hexes_added);
+  std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}{}; min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
                            result.mesh->hexes.size(), result.mesh->hexes.size() == 1 ? "" : "es", result.weave.steps,
-                           counts, attempt, q.min_scaled_jacobian,
-                           q.mean_scaled_jacobian, o.output);
+                           counts, attempt, layer, q.min_scaled_jacobian, q.mean_scaled_jacobian, o.output);
   if (q.below_zero > 0) {
     std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}); the mesh is written "
                              "for its connectivity\n", q.below_zero, q.min_scaled_jacobian);

@@ -3,12 +3,35 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "src/geometry/boundary_layer.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
 
 namespace loom::weave {
 
 namespace {
+
+/// Fewer hexes <= 0, or as many and fewer < 0.2.
+bool improves(const SmoothingReport& a, const SmoothingReport& b) {
+  if (a.below_zero_after != b.below_zero_after) return a.below_zero_after < b.below_zero_after;
+  return a.below_0_2_after < b.below_0_2_after;
+}
+
+/// A mesh that placement leaves with hexes <= 0 (typically hexes with two
+/// faces on one flat part of the boundary, whose corners there are locked)
+/// gets its boundary layer pillowed and is placed again; the pillowed mesh is
+/// kept only when it has fewer hexes <= 0 and is still valid by criteria 1-6.
+void try_boundary_layer(MeshingResult& r, HexMesh& mesh, std::vector<bool> fixed, const QuadSurface& surface) {
+  HexMesh pillowed = mesh;
+  const auto layer = geometry::pillow_boundary_layer(pillowed, fixed);
+  auto placed = smooth_interior(pillowed, fixed);
+  auto check = check_hex_mesh(pillowed, &surface);
+  if (!check.combinatorial_valid() || !improves(placed, r.smoothing)) return;
+  mesh = std::move(pillowed);
+  r.smoothing = placed;
+  r.check = std::move(check);
+  r.boundary_layer = layer;
+}
 
 void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine::Rule> rules,
                 const WeaveOptions& options) {
@@ -18,12 +41,14 @@ void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine
   r.check.reset();
   r.failure.clear();
   r.smoothing = {};
+  r.boundary_layer = {};
   if (!r.weave.closed) return;
   try {
     std::vector<bool> on_boundary;
     HexMesh mesh = stc::to_hex_mesh(r.stc, &on_boundary);
     r.smoothing = smooth_interior(mesh, on_boundary);
     r.check = check_hex_mesh(mesh, &surface);
+    if (r.check->combinatorial_valid() && (r.smoothing.below_zero_after > 0 || r.smoothing.below_0_2_after > 0)) try_boundary_layer(r, mesh, on_boundary, surface);
     r.mesh = std::move(mesh);
   } catch (const std::runtime_error& e) {
     r.failure = e.what();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "src/check/validity.hpp"
+#include "src/geometry/boundary_layer.hpp"
 #include "src/mesh/hex_mesh.hpp"
 #include "src/mesh/quad_surface.hpp"
 #include "src/stc/stc.hpp"
@@ -19,7 +20,10 @@ struct MeshingResult {
   WeaveResult weave;
   std::optional<HexMesh> mesh;           ///< when the weave closed and dualized
   std::optional<ValidityReport> check;   ///< of `mesh`, against the surface
-  SmoothingReport smoothing;
+  SmoothingReport smoothing;             ///< of the mesh as returned
+  /// Hexes and nodes added by pillowing the boundary layer (zero when it was
+  /// not needed): done when placement leaves hexes <= 0, kept when it helps.
+  geometry::BoundaryLayerReport boundary_layer;
   std::string failure;                   ///< why there is no mesh, when the weave closed
   double seconds = 0;                    ///< of all attempts
   std::size_t attempts = 1;              ///< weaves run (see WeaveOptions::attempts)

@@ -1,0 +1,60 @@
+#include "src/geometry/boundary_layer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <stdexcept>
+
+namespace loom::geometry {
+
+namespace {
+
+/// The six faces of a VTK hex, each ordered so that its right-hand normal
+/// points into the hex (for a positively oriented one).
+constexpr int kInwardFaces[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1},
+                                    {1, 5, 6, 2}, {2, 6, 7, 3}, {3, 7, 4, 0}};
+
+using Quad = std::array<std::uint32_t, 4>;
+
+Quad sorted(Quad q) {
+  std::sort(q.begin(), q.end());
+  return q;
+}
+
+}  // namespace
+
+BoundaryLayerReport pillow_boundary_layer(HexMesh& mesh, std::vector<bool>& fixed) {
+  if (fixed.size() != mesh.points.size())
+    throw std::invalid_argument("pillow_boundary_layer: fixed flags and nodes differ in number");
+  std::map<Quad, int> uses;
+  for (const Hex& h : mesh.hexes)
+    for (const auto& f : kInwardFaces) ++uses[sorted({h[f[0]], h[f[1]], h[f[2]], h[f[3]]})];
+
+  std::vector<Quad> boundary;
+  for (const Hex& h : mesh.hexes)
+    for (const auto& f : kInwardFaces) {
+      const Quad q{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
+      if (uses[sorted(q)] == 1) boundary.push_back(q);
+    }
+
+  constexpr std::uint32_t kNone = ~0u;
+  std::vector<std::uint32_t> copy(mesh.points.size(), kNone);
+  BoundaryLayerReport report;
+  for (const Quad& q : boundary)
+    for (std::uint32_t v : q)
+      if (copy[v] == kNone) {
+        copy[v] = static_cast<std::uint32_t>(mesh.points.size());
+        mesh.points.push_back(mesh.points[v]);
+        fixed.push_back(false);
+        ++report.nodes_added;
+      }
+  for (Hex& h : mesh.hexes)
+    for (std::uint32_t& v : h)
+      if (copy[v] != kNone) v = copy[v];
+  for (const Quad& q : boundary)
+    mesh.hexes.push_back({q[0], q[1], q[2], q[3], copy[q[0]], copy[q[1]], copy[q[2]], copy[q[3]]});
+  report.hexes_added = boundary.size();
+  return report;
+}
+
+}  // namespace loom::geometry
