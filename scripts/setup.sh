@@ -18,6 +18,6 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# Extra cmake arguments (e.g. -DLOOM_CHECK_INVARIANTS=ON from scripts/test.sh) pass through.
+# Extra cmake arguments pass through.
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE="${LOOM_BUILD_TYPE:-RelWithDebInfo}" "$@" >/dev/null
 cmake --build build --parallel "$(nproc)"

@@ -1,6 +1,8 @@
 #include "src/stc/stc.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
+#include <string_view>
 
 namespace loom::stc {
 
@@ -87,10 +89,23 @@ std::size_t Stc::whiskers() const {
   return n;
 }
 
-void Stc::debug_check() const {
-#ifdef LOOM_CHECK_INVARIANTS
-  if (auto v = check_invariants(); !v.empty()) throw std::logic_error("STC invariant violated: " + v);
+bool invariant_checks_on() {
+  // Read once: the checks cost O(size of the STC) per rewrite, so a weave
+  // with them is quadratic; the test command turns them on, users do not.
+  static const bool on = [] {
+#ifndef NDEBUG
+    return true;
+#else
+    const char* v = std::getenv("LOOM_CHECK_INVARIANTS");
+    return v != nullptr && *v != '\0' && std::string_view(v) != "0";
 #endif
+  }();
+  return on;
+}
+
+void Stc::debug_check() const {
+  if (!invariant_checks_on()) return;
+  if (auto v = check_invariants(); !v.empty()) throw std::logic_error("STC invariant violated: " + v);
 }
 
 }  // namespace loom::stc

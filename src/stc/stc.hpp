@@ -52,6 +52,11 @@ struct StcSchema {
   static const StcSchema& get();
 };
 
+/// Whether Stc::debug_check() checks: always in Debug builds (no NDEBUG),
+/// otherwise when the environment variable LOOM_CHECK_INVARIANTS is set and
+/// not "0" (ctest sets it). Read once per process.
+bool invariant_checks_on();
+
 class Stc {
 public:
   Stc();
@@ -111,8 +116,8 @@ public:
   /// Checks the STC invariants (see invariants.cpp for the list); returns the
   /// first violation, or an empty string.
   std::string check_invariants() const;
-  /// In builds with LOOM_CHECK_INVARIANTS, throws std::logic_error on a
-  /// violation; otherwise does nothing. Called after every mutation.
+  /// When invariant_checks_on(), throws std::logic_error on a violation;
+  /// otherwise does nothing. Called after every mutation.
   void debug_check() const;
 
 private:
