@@ -89,7 +89,8 @@ std::vector<Input> corpus(int randquad_max, const std::string& dir) {
   add("tet4", "tet4", [] { return gen::tet4(); });
   add("schneiders", "schneiders", [] { return gen::schneiders(); });
   add("spindle", "spindle", [] { return gen::spindle(); });
-  add("bosses 1", "bosses", [] { return gen::bosses(1); });
+  for (int k : {1, 2}) add(fmt::format("bosses {}", k), "bosses", [k] { return gen::bosses(k); });
+  add("bosses-free 1", "bosses-free", [] { return gen::bosses_free(1); });
   for (int f = 6; f <= randquad_max; f += 2)
     for (int s = 0; s < 10; ++s)
       add(fmt::format("randquad {} s{}", f, s), "randquad", [f, s] { return gen::randquad(f, std::uint64_t(s)); }, f);

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -305,33 +306,54 @@ TEST_CASE("randquad: F must be even and at least 6") {
   CHECK_THROWS_WITH_AS(kind->make({10, -1}), doctest::Contains("S is -1"), InputError);
 }
 
-TEST_CASE("bosses: Gmsh's all-quad mesh of a box with two bosses") {
-  std::size_t coarse = 0;
+namespace {
+
+/// What both bosses meshes must be: even, closed, genus 0, outward, the
+/// outline [0,6]x[0,4]x[0,3] exact, the part's volume, and the same every run.
+void check_bosses_surface(const QuadSurface& s, const std::function<QuadSurface()>& again) {
+  CHECK(s.quads.size() % 2 == 0);
+  CHECK(check_surface(s) == 0);
+  QuadSurface validated = s;
+  SurfaceSummary summary;
+  REQUIRE_NOTHROW(summary = validate_surface(validated, "bosses"));
+  CHECK(summary.genus == 0);
+  CHECK(!summary.flipped);
+  // The outline stays [0,6]x[0,4]x[0,3] exactly: no node was moved to fix parity.
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto [low, high] = std::minmax_element(s.points.begin(), s.points.end(),
+                                                 [axis](const Vec3& a, const Vec3& b) { return a[axis] < b[axis]; });
+    CHECK((*low)[axis] == 0.0);
+    CHECK((*high)[axis] == std::array{6.0, 4.0, 3.0}[axis]);
+  }
+  // Base 36, block 4, cylinder 1.5 * 0.64 pi less what its polygonal section cuts off.
+  CHECK(signed_volume(s) < 40 + 1.5 * 0.64 * std::numbers::pi);
+  CHECK(signed_volume(s) > 40 + 1.5 * 0.64 * 2.0);
+  const QuadSurface repeat = again();
+  CHECK(repeat.points == s.points);
+  CHECK(repeat.quads == s.quads);
+}
+
+}  // namespace
+
+TEST_CASE("bosses: a block-structured all-quad mesh of a box with two bosses, 280 K^2 quads") {
   for (int k : {1, 2}) {
     CAPTURE(k);
     const QuadSurface s = gen::bosses(k);
-    CHECK(s.quads.size() % 2 == 0);
-    CHECK(check_surface(s) == 0);
-    QuadSurface validated = s;
-    SurfaceSummary summary;
-    REQUIRE_NOTHROW(summary = validate_surface(validated, "bosses"));
-    CHECK(summary.genus == 0);
-    CHECK(!summary.flipped);
-    // The outline stays [0,6]x[0,4]x[0,3] exactly: no node was moved to fix parity.
-    for (int axis = 0; axis < 3; ++axis) {
-      const auto [low, high] = std::minmax_element(s.points.begin(), s.points.end(),
-                                                   [axis](const Vec3& a, const Vec3& b) { return a[axis] < b[axis]; });
-      CHECK((*low)[axis] == 0.0);
-      CHECK((*high)[axis] == std::array{6.0, 4.0, 3.0}[axis]);
-    }
-    // Base 36, block 4, cylinder 1.5π less what its polygonal section cuts off.
-    CHECK(signed_volume(s) < 40 + 1.5 * std::numbers::pi);
-    CHECK(signed_volume(s) > 40 + 1.5 * 2.5);
-    const QuadSurface again = gen::bosses(k);
-    CHECK(again.points == s.points);
-    CHECK(again.quads == s.quads);
+    CHECK(s.quads.size() == 280u * k * k);
+    check_bosses_surface(s, [k] { return gen::bosses(k); });
+  }
+  CHECK_THROWS_WITH_AS(gen::bosses(0), doctest::Contains("gen bosses: K is 0"), InputError);
+  CHECK_THROWS_WITH_AS(gen::bosses(51), doctest::Contains("limit"), InputError);
+}
+
+TEST_CASE("bosses-free: Gmsh's free all-quad mesh of the same part") {
+  std::size_t coarse = 0;
+  for (int k : {1, 2}) {
+    CAPTURE(k);
+    const QuadSurface s = gen::bosses_free(k);
+    check_bosses_surface(s, [k] { return gen::bosses_free(k); });
     if (k == 1) coarse = s.quads.size();
     if (k == 2) CHECK(s.quads.size() > coarse);
   }
-  CHECK_THROWS_WITH_AS(gen::bosses(0), doctest::Contains("gen bosses: K is 0"), InputError);
+  CHECK_THROWS_WITH_AS(gen::bosses_free(0), doctest::Contains("gen bosses-free: K is 0"), InputError);
 }

@@ -66,6 +66,21 @@ TEST_CASE("L-shapes close with good elements") {
   }
 }
 
+TEST_CASE("the block-structured bosses close, valid, at two sizes") {
+  for (int k : {1, 2}) {
+    CAPTURE(k);
+    const QuadSurface surface = gen::bosses(k);
+    auto r = weave::mesh_surface(surface, shipped_rules(), {});
+    REQUIRE_MESSAGE(r.weave.closed, r.weave.left);
+    REQUIRE(r.mesh.has_value());
+    CHECK(r.check->valid());  // criteria 1-7 against the surface: every scaled Jacobian > 0
+    CHECK(r.check->quality.min_scaled_jacobian > 0.2);
+    CHECK(r.attempts == 1);
+    MESSAGE("bosses " << k << ": " << r.stc.hexes() << " woven hexes + " << r.boundary_layer.hexes_added
+                      << " in the boundary layer, min SJ " << r.check->quality.min_scaled_jacobian);
+  }
+}
+
 TEST_CASE("the same input, rules and strategy give the same mesh") {
   for (const char* strategy : {"priority", "random"}) {
     CAPTURE(strategy);

@@ -58,11 +58,16 @@ QuadSurface torus(int n, int m);
 /// flips and diagonal slides, then laid out on the sphere (docs/generators.md).
 /// The same seed gives the same surface.
 QuadSurface randquad(int faces, std::uint64_t seed);
-/// Surface of the box [0,6]x[0,4]x[0,1.5] with a cylindrical and a block boss on
-/// top, meshed all-quad by Gmsh (OpenCASCADE fuse; Frontal-Delaunay, blossom
-/// recombination, subdivision into quads). k in 1..50 sets the element size
-/// 3/k (1 coarse, 2 finer...).
+/// Surface of the box [0,6]x[0,4]x[0,1.5] with a cylindrical boss (radius 0.8
+/// round (1.75, 2), up to z = 3) and a block boss ([3.5,5.5]x[1,3], up to z =
+/// 2.5) on top, meshed all-quad by Gmsh. `bosses`: the part cut into 29
+/// topological cubes (OpenCASCADE fragments; an O-grid round the cylinder),
+/// its 70 four-sided boundary patches meshed transfinite with 2k x 2k quads
+/// each (280 k^2 quads). k in 1..50.
 QuadSurface bosses(int k);
+/// The same part meshed free: OpenCASCADE fuse, Frontal-Delaunay, simple
+/// recombination, subdivision into quads, element size 3/k (k in 1..50).
+QuadSurface bosses_free(int k);
 /// Structured hex mesh of [0,a]x[0,b]x[0,c] with unit cells, VTK node order,
 /// positively oriented; node (i,j,k) has index i + (a+1)(j + (b+1)k).
 HexMesh hexgrid(int a, int b, int c);
