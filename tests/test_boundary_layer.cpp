@@ -13,6 +13,7 @@
 #include "src/check/validity.hpp"
 #include "src/gen/generators.hpp"
 #include "src/geometry/boundary_layer.hpp"
+#include "src/geometry/placement.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
 #include "src/weave/pipeline.hpp"
@@ -93,7 +94,13 @@ TEST_CASE("the pipeline pillows the cylinder's boundary layer and the cylinder c
   REQUIRE(weave::weave(raw, shipped_rules(), {}).closed);
   std::vector<bool> on_boundary;
   HexMesh unpillowed = stc::to_hex_mesh(raw, &on_boundary);
-  CHECK(weave::smooth_interior(unpillowed, on_boundary).locked_invalid > 0);
+  const auto locked = geometry::locked_corners(unpillowed, on_boundary);
+  CHECK(locked.invalid > 0);
+  CHECK(locked.least <= 0);
+  CHECK(weave::smooth_interior(unpillowed, on_boundary).locked_invalid == locked.invalid);
+  // With the layer nothing is locked: every corner has a free node.
+  geometry::pillow_boundary_layer(unpillowed, on_boundary);
+  CHECK(geometry::locked_corners(unpillowed, on_boundary).below_0_2 == 0);
 }
 
 TEST_CASE("a mesh that placement makes good enough keeps its woven hexes") {

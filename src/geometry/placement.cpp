@@ -180,14 +180,31 @@ bool Placer::apply(std::uint32_t p, const V3& v, double size) {
 
 using namespace detail;
 
-PlacementReport place_nodes(HexMesh& mesh, const std::vector<bool>& fixed, const PlacementOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+namespace {
+
+void check_arguments(const HexMesh& mesh, const std::vector<bool>& fixed) {
   if (fixed.size() != mesh.points.size())
     throw std::invalid_argument("place_nodes: " + std::to_string(fixed.size()) + " fixed flags for " +
                                 std::to_string(mesh.points.size()) + " nodes");
   for (const Hex& h : mesh.hexes)
     for (std::uint32_t v : h)
       if (v >= mesh.points.size()) throw std::invalid_argument("place_nodes: a hex refers to a node out of range");
+}
+
+}  // namespace
+
+LockedCorners locked_corners(const HexMesh& mesh, const std::vector<bool>& fixed) {
+  HexMesh copy = mesh;  // the Placer holds the mesh it may move
+  check_arguments(copy, fixed);
+  Placer placer(copy, fixed, {});
+  LockedCorners locked;
+  placer.count_locked(locked.invalid, locked.below_0_2, locked.least);
+  return locked;
+}
+
+PlacementReport place_nodes(HexMesh& mesh, const std::vector<bool>& fixed, const PlacementOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  check_arguments(mesh, fixed);
 
   PlacementReport report;
   Placer placer(mesh, fixed, options);

@@ -67,6 +67,16 @@ struct PlacementReport {
   double seconds = 0;
 };
 
+struct LockedCorners {
+  std::size_t invalid = 0;    ///< hexes with a locked corner <= 0
+  std::size_t below_0_2 = 0;  ///< hexes with a locked corner < 0.2
+  double least = 1;           ///< the least locked corner (1 when there is none)
+};
+
+/// The locked corners of a mesh (see PlacementReport::locked_invalid): what no
+/// placement of the free nodes can change. Same preconditions as place_nodes.
+LockedCorners locked_corners(const HexMesh& mesh, const std::vector<bool>& fixed);
+
 /// Moves the nodes with fixed[i] == false to untangle the mesh and raise its
 /// scaled Jacobians. The result replaces the input only when it is better:
 /// fewer hexes <= 0, then fewer < 0.2, then a higher minimum, then a higher

@@ -17,20 +17,37 @@ bool improves(const SmoothingReport& a, const SmoothingReport& b) {
   return a.below_0_2_after < b.below_0_2_after;
 }
 
-/// A mesh that placement leaves with hexes <= 0 (typically hexes with two
-/// faces on one flat part of the boundary, whose corners there are locked)
-/// gets its boundary layer pillowed and is placed again; the pillowed mesh is
-/// kept only when it has fewer hexes <= 0 and is still valid by criteria 1-6.
-void try_boundary_layer(MeshingResult& r, HexMesh& mesh, std::vector<bool> fixed, const QuadSurface& surface) {
+/// The boundary layer pillowed into `mesh` and the nodes placed; false (and
+/// nothing changed) when the result fails criteria 1-6 or, with `only_if_better`,
+/// is not better than what r.smoothing says of the mesh without it.
+bool place_with_boundary_layer(MeshingResult& r, HexMesh& mesh, std::vector<bool> fixed, const QuadSurface& surface,
+                               bool only_if_better) {
   HexMesh pillowed = mesh;
   const auto layer = geometry::pillow_boundary_layer(pillowed, fixed);
   auto placed = smooth_interior(pillowed, fixed);
   auto check = check_hex_mesh(pillowed, &surface);
-  if (!check.combinatorial_valid() || !improves(placed, r.smoothing)) return;
+  if (!check.combinatorial_valid() || (only_if_better && !improves(placed, r.smoothing))) return false;
   mesh = std::move(pillowed);
   r.smoothing = placed;
   r.check = std::move(check);
   r.boundary_layer = layer;
+  return true;
+}
+
+/// Node placement, and the boundary layer when it helps. A woven hex with two
+/// faces on one flat part of the boundary has corners whose four nodes are
+/// all on the boundary: locked, whatever placement does. When some locked
+/// corner is below 0.2 the layer goes in first (placing the mesh without it
+/// would be wasted work); otherwise the mesh is placed, and a layer is tried
+/// when hexes <= 0 or < 0.2 are left, and kept when it does better.
+void place(MeshingResult& r, HexMesh& mesh, const std::vector<bool>& on_boundary, const QuadSurface& surface) {
+  const auto locked = geometry::locked_corners(mesh, on_boundary);
+  if (locked.below_0_2 > 0 && place_with_boundary_layer(r, mesh, on_boundary, surface, false)) return;
+  r.smoothing = smooth_interior(mesh, on_boundary);
+  r.check = check_hex_mesh(mesh, &surface);
+  if (locked.below_0_2 == 0 && r.check->combinatorial_valid() &&
+      (r.smoothing.below_zero_after > 0 || r.smoothing.below_0_2_after > 0))
+    place_with_boundary_layer(r, mesh, on_boundary, surface, true);
 }
 
 void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine::Rule> rules,
@@ -46,9 +63,7 @@ void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine
   try {
     std::vector<bool> on_boundary;
     HexMesh mesh = stc::to_hex_mesh(r.stc, &on_boundary);
-    r.smoothing = smooth_interior(mesh, on_boundary);
-    r.check = check_hex_mesh(mesh, &surface);
-    if (r.check->combinatorial_valid() && (r.smoothing.below_zero_after > 0 || r.smoothing.below_0_2_after > 0)) try_boundary_layer(r, mesh, on_boundary, surface);
+    place(r, mesh, on_boundary, surface);
     r.mesh = std::move(mesh);
   } catch (const std::runtime_error& e) {
     r.failure = e.what();
