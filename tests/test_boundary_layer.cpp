@@ -8,6 +8,8 @@
 #include <cstring>
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 #include "engine/rule_compiler.hpp"
 #include "src/check/hex_boundary.hpp"
 #include "src/check/validity.hpp"
@@ -17,6 +19,7 @@
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
 #include "src/weave/pipeline.hpp"
+#include "tests/support.hpp"
 
 using namespace loom;
 
@@ -111,4 +114,19 @@ TEST_CASE("a mesh that placement makes good enough keeps its woven hexes") {
     CHECK(r.boundary_layer.hexes_added == 0);
     CHECK(r.mesh->hexes.size() == r.stc.hexes());
   }
+}
+
+TEST_CASE("loom weave says when it pillowed the boundary layer, and the report counts its hexes") {
+  loom::test::ScratchDir dir("layer");
+  REQUIRE(loom::test::run_cli("gen cylinder 4 6 -o " + (dir / "c.obj").string()).status == 0);
+  const auto r = loom::test::run_cli("weave " + (dir / "c.obj").string() + " -o " + (dir / "c.vtk").string() +
+                                     " --report " + (dir / "c.json").string());
+  REQUIRE_MESSAGE(r.status == 0, r.err);  // 0: every scaled Jacobian > 0 (it was 3 without the layer)
+  CHECK(r.out.find("woven: 352 hexes") == 0);
+  CHECK(r.out.find("boundary layer pillowed (+192 hexes)") != std::string::npos);
+  const auto j = nlohmann::json::parse(loom::test::slurp(dir / "c.json"));
+  CHECK(j["hexes"] == 160);
+  CHECK(j["boundary_layer_hexes"] == 192);
+  CHECK(j["below_zero"] == 0);
+  CHECK(loom::test::run_cli("check " + (dir / "c.vtk").string() + " --boundary " + (dir / "c.obj").string()).status == 0);
 }
