@@ -100,7 +100,8 @@ std::string md_header(const std::vector<std::string>& cells) {
   return s + "\n";
 }
 
-std::string summary_md(const std::vector<Row>& rows) {
+/// `best`, when given, receives the configuration that closes most.
+std::string summary_md(const std::vector<Row>& rows, std::string* best_out = nullptr) {
   std::string out;
   auto cfgs = config_order(rows);
   out += "### Per configuration\n\n";
@@ -137,6 +138,7 @@ std::string summary_md(const std::vector<Row>& rows) {
     if (key > best_rate || (key == best_rate && closed > best_closed)) best = c, best_rate = key, best_closed = closed;
   }
   out += "\n";
+  if (best_out) *best_out = best;
   if (!best.empty()) {
     out += fmt::format("Closes most: **{}** ({:.1f}% of randquad; {} runs closed in all).\n\n", best,
                        100.0 * best_rate, best_closed);
@@ -152,6 +154,39 @@ std::string summary_md(const std::vector<Row>& rows) {
       out += "\n";
     }
   }
+  return out;
+}
+
+/// What stops a run, in a few words (from its note).
+std::string stop_cause(const Row& r) {
+  if (r.note.starts_with("timeout:")) return "stopped by the timeout";
+  if (r.note.starts_with("error:")) return "error";
+  if (r.note.starts_with("primal:")) return "closed; primal construction failed";
+  if (r.note.starts_with("criterion ")) return "closed; fails " + r.note.substr(0, r.note.find(':'));
+  if (!r.closed && r.note.find("the front stopped shrinking") != std::string::npos) return "open; the front stopped shrinking";
+  if (!r.closed && r.note.find("stopped after") != std::string::npos) return "open; step limit";
+  if (!r.closed) return "open; no rule applies";
+  return "closed; " + r.note;
+}
+
+/// Every run of `config` without a mesh passing criteria 1-6: counts by
+/// cause, then each run (smallest first) with what stops it.
+std::string stops_md(const std::vector<Row>& rows, const std::string& config) {
+  std::vector<const Row*> fails;
+  for (const auto& r : rows)
+    if (r.config == config && !r.comb_valid) fails.push_back(&r);
+  if (fails.empty()) return "";
+  std::stable_sort(fails.begin(), fails.end(), [](const Row* a, const Row* b) { return a->quads < b->quads; });
+  std::map<std::string, std::size_t> causes;
+  for (const Row* r : fails) ++causes[stop_cause(*r)];
+  std::string out = fmt::format("### What stops {}, input by input\n\n{} runs give no mesh passing criteria 1-6:\n\n",
+                                config, fails.size());
+  out += md_header({"cause", "runs"});
+  for (const auto& [cause, n] : causes) out += md_row({cause, std::to_string(n)});
+  out += "\n<details><summary>Every one, smallest first</summary>\n\n";
+  out += md_header({"input", "quads", "cause", "what is left"});
+  for (const Row* r : fails) out += md_row({"`" + r->input + "`", std::to_string(r->quads), stop_cause(*r), r->note});
+  out += "\n</details>\n\n";
   return out;
 }
 
@@ -201,9 +236,11 @@ void write_outputs(std::vector<Row> rows, const std::string& csv, const std::str
   // As the CSV stores them, so that a merge of shard CSVs writes this same report.
   for (Row& r : rows) r.seconds = std::stod(fmt::format("{:.4f}", r.seconds));
   if (!csv.empty()) write_csv(csv, rows);
-  std::string text = "## Summary\n\n" + summary_md(rows);
+  std::string best;
+  std::string text = "## Summary\n\n" + summary_md(rows, &best);
   std::string rq = randquad_md(rows);
   if (!rq.empty()) text += "### Random quadrangulations: closed runs per F (of 10 seeds)\n\n" + rq + "\n";
+  if (!best.empty()) text += stops_md(rows, best);
   text += md_full ? "### Every run\n\n" : "### Per input (randquad rows in the CSV)\n\n";
   text += rows_md(rows, md_full);
   if (!md.empty()) {
