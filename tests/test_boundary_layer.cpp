@@ -12,6 +12,7 @@
 
 #include "engine/rule_compiler.hpp"
 #include "src/check/hex_boundary.hpp"
+#include "src/check/hex_topology.hpp"
 #include "src/check/validity.hpp"
 #include "src/gen/generators.hpp"
 #include "src/geometry/boundary_layer.hpp"
@@ -25,22 +26,20 @@ using namespace loom;
 
 namespace {
 
-constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-
 /// For each hex, how many of its faces no other hex has.
 std::vector<int> boundary_faces_per_hex(const HexMesh& mesh) {
   std::map<std::array<std::uint32_t, 4>, int> count;
-  auto key = [&](const Hex& h, const int* f) {
+  auto key = [&](const Hex& h, const std::array<int, 4>& f) {
     std::array<std::uint32_t, 4> k{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
     std::sort(k.begin(), k.end());
     return k;
   };
   for (const Hex& h : mesh.hexes)
-    for (const auto& f : kFaces) ++count[key(h, f)];
+    for (const auto& f : kHexFaceCorners) ++count[key(h, f)];
   std::vector<int> per_hex;
   for (const Hex& h : mesh.hexes) {
     int n = 0;
-    for (const auto& f : kFaces) n += count[key(h, f)] == 1;
+    for (const auto& f : kHexFaceCorners) n += count[key(h, f)] == 1;
     per_hex.push_back(n);
   }
   return per_hex;

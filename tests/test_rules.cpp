@@ -99,20 +99,40 @@ TEST_CASE("the anchored matcher and VF2 find the same matches for every shipped 
   }
 }
 
+namespace {
+
+/// What the engine applies to the initial STC of `surface`, step by step (up
+/// to `max_steps`), incrementally or with a full rescan after every step.
+struct Run {
+  std::vector<std::vector<engine::Id>> matched;
+  std::vector<std::string> rules;
+  std::size_t whiskers_left = 0;
+};
+
+Run run_engine(const QuadSurface& surface, const std::vector<engine::Rule>& rules, bool full_rescan,
+               std::size_t max_steps) {
+  stc::Stc stc = stc::build_from_surface(surface);
+  engine::Engine eng(stc.graph(), rules, weave::weave_actions(stc), {});
+  eng.set_full_rescan(full_rescan);
+  engine::Application app;
+  Run run;
+  while (run.matched.size() < max_steps && eng.step(&app)) {
+    run.matched.push_back(app.matched.elements);
+    run.rules.push_back(app.rule->name);
+  }
+  run.whiskers_left = stc.whiskers();
+  return run;
+}
+
+}  // namespace
+
 TEST_CASE("incremental matching chooses exactly what a full rescan after every step chooses") {
   auto rules = engine::load_rule_dir(weave::default_rules_dir(), schema());
   for (const auto& surface : {gen::box(3, 3, 2), gen::lshape(2), gen::box(1, 4, 2)}) {
-    std::vector<std::vector<engine::Id>> runs[2];
-    for (int full = 0; full < 2; ++full) {
-      stc::Stc stc = stc::build_from_surface(surface);
-      engine::Engine eng(stc.graph(), rules, weave::weave_actions(stc), {});
-      eng.set_full_rescan(full == 1);
-      engine::Application app;
-      while (eng.step(&app)) runs[full].push_back(app.matched.elements);
-      CHECK(stc.whiskers() == 0);
-    }
-    CHECK(runs[0].size() > 10);
-    CHECK(runs[0] == runs[1]);
+    const Run incremental = run_engine(surface, rules, false, 100000), full = run_engine(surface, rules, true, 100000);
+    CHECK(incremental.whiskers_left == 0);
+    CHECK(incremental.matched.size() > 10);
+    CHECK(incremental.matched == full.matched);
   }
 }
 
@@ -123,19 +143,10 @@ TEST_CASE("incremental matching agrees with a full rescan on weaves where every 
   std::map<std::string, std::size_t> applied;
   for (const auto& surface : {gen::schneiders(), gen::randquad(20, 5), gen::randquad(14, 4), gen::randquad(18, 1),
                               gen::randquad(16, 1), gen::randquad(8, 0)}) {
-    std::vector<std::vector<engine::Id>> runs[2];
-    for (int full = 0; full < 2; ++full) {
-      stc::Stc stc = stc::build_from_surface(surface);
-      engine::Engine eng(stc.graph(), rules, weave::weave_actions(stc), {});
-      eng.set_full_rescan(full == 1);
-      engine::Application app;
-      for (int i = 0; i < 600 && eng.step(&app); ++i) {
-        runs[full].push_back(app.matched.elements);
-        if (full == 0) ++applied[app.rule->name];
-      }
-    }
-    CHECK(runs[0].size() > 10);
-    CHECK(runs[0] == runs[1]);
+    const Run incremental = run_engine(surface, rules, false, 600), full = run_engine(surface, rules, true, 600);
+    CHECK(incremental.matched.size() > 10);
+    CHECK(incremental.matched == full.matched);
+    for (const auto& name : incremental.rules) ++applied[name];
   }
   for (const auto& r : rules) CHECK_MESSAGE(applied[r.name] > 0, r.name << " never applied: the case does not cover it");
 }

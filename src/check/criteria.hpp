@@ -18,10 +18,9 @@ CriterionResult failed(int number, std::string detail);
 CriterionResult distinct_nodes(const HexMesh& mesh);
 /// 2: no duplicated hexes (same node set), and every face in one or two hexes.
 CriterionResult faces_in_one_or_two_hexes(const HexMesh& mesh, const HexTopology& topo);
-/// 3: no two hexes share more than one face.
-/// Criterion 3: no two hexes share more than one face (no doublets), and
-/// more generally any two hexes meet in one face, one edge, one node or not
-/// at all (the validity of Verhetsel et al. 2019).
+/// 3: no two hexes share more than one face (no doublets), and more generally
+/// any two hexes meet in one face, one edge, one node or not at all (the
+/// validity of Verhetsel et al. 2019).
 CriterionResult no_doublets(const HexMesh& mesh, const HexTopology& topo);
 /// The second half of criterion 3, on its own.
 CriterionResult hexes_meet_properly(const HexMesh& mesh);

@@ -105,14 +105,11 @@ CriterionResult no_doublets(const HexMesh& mesh, const HexTopology& topo) {
 
 namespace {
 
-constexpr std::array<std::array<int, 2>, 12> kHexEdges{
-    {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
-
 /// Whether the corners `mask` of a hex (bit k: corner k) are one of its
 /// edges (2 corners) or faces (4 corners).
 bool is_edge_or_face(unsigned mask) {
   if (std::popcount(mask) == 2) {
-    for (auto [a, b] : kHexEdges)
+    for (auto [a, b] : kHexEdgeCorners)
       if (mask == ((1u << a) | (1u << b))) return true;
     return false;
   }

@@ -5,14 +5,11 @@
 #include <map>
 #include <stdexcept>
 
+#include "src/check/hex_topology.hpp"
+
 namespace loom::geometry {
 
 namespace {
-
-/// The six faces of a VTK hex, each ordered so that its right-hand normal
-/// points into the hex (for a positively oriented one).
-constexpr int kInwardFaces[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1},
-                                    {1, 5, 6, 2}, {2, 6, 7, 3}, {3, 7, 4, 0}};
 
 using Quad = std::array<std::uint32_t, 4>;
 
@@ -28,12 +25,14 @@ BoundaryLayerReport pillow_boundary_layer(HexMesh& mesh, std::vector<bool>& fixe
     throw std::invalid_argument("pillow_boundary_layer: fixed flags and nodes differ in number");
   std::map<Quad, int> uses;
   for (const Hex& h : mesh.hexes)
-    for (const auto& f : kInwardFaces) ++uses[sorted({h[f[0]], h[f[1]], h[f[2]], h[f[3]]})];
+    for (const auto& f : kHexFaceCorners) ++uses[sorted({h[f[0]], h[f[1]], h[f[2]], h[f[3]]})];
 
   std::vector<Quad> boundary;
+  // Each boundary quad turned to face into its hex: the new hex's bottom,
+  // with its top (the copies) on that side.
   for (const Hex& h : mesh.hexes)
-    for (const auto& f : kInwardFaces) {
-      const Quad q{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
+    for (const auto& f : kHexFaceCorners) {
+      const Quad q{h[f[3]], h[f[2]], h[f[1]], h[f[0]]};
       if (uses[sorted(q)] == 1) boundary.push_back(q);
     }
 

@@ -106,7 +106,7 @@ void Placer::build_edges() {
     around.clear();
     for (std::uint32_t i = hex_start_[p]; i < hex_start_[p + 1]; ++i) {
       const Hex& hex = mesh_.hexes[node_hexes_[i]];
-      for (const auto& e : kHexEdges) {
+      for (const auto& e : kHexEdgeCorners) {
         if (hex[e[0]] == p && hex[e[1]] != p) around.push_back(hex[e[1]]);
         if (hex[e[1]] == p && hex[e[0]] != p) around.push_back(hex[e[0]]);
       }
@@ -132,7 +132,7 @@ void Placer::update_scales() {
   for (std::size_t h = 0; h < mesh_.hexes.size(); ++h) {
     const Hex& hex = mesh_.hexes[h];
     double sum = 0;
-    for (const auto& e : kHexEdges) sum += norm(mesh_.points[hex[e[0]]] - mesh_.points[hex[e[1]]]);
+    for (const auto& e : kHexEdgeCorners) sum += norm(mesh_.points[hex[e[0]]] - mesh_.points[hex[e[1]]]);
     const double mean = sum / 12.0;
     inv_scale_[h] = mean > 0 && std::isfinite(mean) ? 1.0 / mean : 1.0;
   }

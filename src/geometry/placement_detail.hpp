@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "src/check/hex_topology.hpp"
 #include "src/geometry/placement.hpp"
 
 namespace loom::geometry::detail {
@@ -21,8 +22,6 @@ using M3 = Eigen::Matrix3d;
 /// corner k spans the edges to kCornerEdges[k][0..2], positive when right-handed.
 inline constexpr int kCornerEdges[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
                                     {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
-inline constexpr int kHexEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Fixed tuning (docs/geometry.md).

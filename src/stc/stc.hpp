@@ -68,6 +68,16 @@ public:
   /// Coordinates of mesh nodes, indexed by node.point.
   std::vector<Vec3>& points() { return points_; }
   const std::vector<Vec3>& points() const { return points_; }
+  /// The position of a node, or nullptr while it has none (node.point -1).
+  const Vec3* position(Id node) const {
+    const std::int32_t p = graph_.get(node, ids_->node_point);
+    return p < 0 ? nullptr : &points_[static_cast<std::size_t>(p)];
+  }
+  /// Gives `node` a new point at `at`.
+  void place(Id node, const Vec3& at) {
+    graph_.set(node, ids_->node_point, static_cast<std::int32_t>(points_.size()));
+    points_.push_back(at);
+  }
   /// For each boundary quad (face.boundary), the point of each of its four
   /// nodes as built, in the face's node order: what a node split after a
   /// through-cell needs to know which surface node a boundary face stands on.

@@ -75,8 +75,7 @@ PillowCounts insert_pillow(Stc& stc, std::span<const Id> shrink_set) {
     for (auto& [part, c] : centre) {
       Id copy = g.add(ids.node);
       Vec3 towards = (1.0 / c.second) * c.first;
-      g.set(copy, ids.node_point, static_cast<std::int32_t>(stc.points().size()));
-      stc.points().push_back(at + 0.3 * (towards - at));
+      stc.place(copy, at + 0.3 * (towards - at));
       inner_node[pair_key(x, static_cast<Id>(part))] = copy;
       Id v = g.add(ids.edge);
       g.link(v, ids.edge_node, 0, x);

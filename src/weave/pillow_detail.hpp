@@ -41,8 +41,8 @@ inline std::vector<Id> owners_via(const Graph& g, Id target, engine::PortId port
 }
 
 inline Vec3 point_of(const Stc& stc, Id node) {
-  std::int32_t p = stc.graph().get(node, stc.ids().node_point);
-  return p >= 0 ? stc.points()[static_cast<std::size_t>(p)] : Vec3{0, 0, 0};
+  const Vec3* p = stc.position(node);
+  return p ? *p : Vec3{0, 0, 0};
 }
 
 inline Vec3 hex_centroid(const Stc& stc, Id hex) {

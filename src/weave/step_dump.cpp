@@ -25,14 +25,12 @@ void StepDumper::emit(const std::string& stem, const std::string& dot) {
     write_text_atomically(dir_ / (stem + ".svg"), engine::render_svg(dot));
     written_.push_back(dir_ / (stem + ".svg"));
   }
-  files_ = written_.size();
 }
 
 void StepDumper::clear() {
   std::error_code ec;
   for (const auto& file : written_) std::filesystem::remove(file, ec);
   written_.clear();
-  files_ = 0;
 }
 
 void StepDumper::dump(const engine::Application& step, const stc::Stc& stc) {

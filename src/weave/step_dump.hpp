@@ -17,7 +17,6 @@ public:
   /// step-NNNN-RULE.dot (the elements matched and made, highlighted) and
   /// step-NNNN-sheet-K.dot (K: the sheet's rank, as in `loom stc`).
   void dump(const engine::Application& step, const stc::Stc& stc);
-  std::size_t files_written() const { return files_; }
   /// Removes every file written so far (a weave that starts again).
   void clear();
 
@@ -25,7 +24,6 @@ private:
   void emit(const std::string& stem, const std::string& dot);
   std::filesystem::path dir_;
   bool svg_;
-  std::size_t files_ = 0;
   std::vector<std::filesystem::path> written_;
 };
 

@@ -20,14 +20,9 @@ namespace {
 
 /// The position of a node, for the placement actions (which need one).
 Vec3 placed(const stc::Stc& stc, engine::Id node, const char* action) {
-  std::int32_t p = stc.graph().get(node, stc.ids().node_point);
-  if (p < 0) throw std::runtime_error(fmt::format("{}: node {} has no position yet", action, node));
-  return stc.points()[static_cast<std::size_t>(p)];
-}
-
-void place(stc::Stc& stc, engine::Id node, Vec3 at) {
-  stc.graph().set(node, stc.ids().node_point, static_cast<std::int32_t>(stc.points().size()));
-  stc.points().push_back(at);
+  const Vec3* p = stc.position(node);
+  if (!p) throw std::runtime_error(fmt::format("{}: node {} has no position yet", action, node));
+  return *p;
 }
 
 }  // namespace
@@ -38,7 +33,7 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // v, whose edges from v run to a, b and c: n = a + b + c - 2v.
   actions.add("place_hex_corner", [&stc](engine::Graph&, std::span<const engine::Id> args) {
     auto at = [&](engine::Id node) { return placed(stc, node, "place_hex_corner"); };
-    place(stc, args[0], at(args[2]) + at(args[3]) + at(args[4]) - 2.0 * at(args[1]));
+    stc.place(args[0], at(args[2]) + at(args[3]) + at(args[4]) - 2.0 * at(args[1]));
   });
   // place_off_face(n, a, b, d): n is the corner above a of a hex standing on
   // a front face a b . d (which faces away from the hex), at the face's
@@ -48,7 +43,7 @@ engine::Actions weave_actions(stc::Stc& stc) {
     Vec3 a = at(args[1]), ab = at(args[2]) - a, ad = at(args[3]) - a;
     Vec3 away = cross(ab, ad);
     double length = 0.5 * (norm(ab) + norm(ad)), size = norm(away);
-    place(stc, args[0], size > 0 ? a - (length / size) * away : a);
+    stc.place(args[0], size > 0 ? a - (length / size) * away : a);
   });
   // pillow_star(n): a pillow sheet around every hex at node n.
   actions.add("pillow_star", [&stc](engine::Graph&, std::span<const engine::Id> args) {
@@ -161,7 +156,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
       if (!stalled()) continue;
       // Backtracking within the window cannot leave a front that has been
       // rolling for longer than the window: give up.
-      ++result.stalls;
+      result.stalled = true;
       break;
     }
     if (backtracking) {
@@ -183,7 +178,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   if (!result.closed) {
     result.left = describe_left(stc);
     if (result.backtracks) result.left += fmt::format(" after {} backtracks", result.backtracks);
-    if (result.stalls) result.left += fmt::format("; the front stopped shrinking for {} applications", since_smallest);
+    if (result.stalled) result.left += fmt::format("; the front stopped shrinking for {} applications", since_smallest);
     if (result.step_limit_hit) result.left += fmt::format(" (stopped after {} applications)", result.steps);
   }
   return result;

@@ -42,7 +42,7 @@ struct WeaveResult {
   std::size_t steps = 0;
   std::size_t whiskers_left = 0;
   std::size_t backtracks = 0;       ///< choices undone to try another
-  std::size_t stalls = 0;           ///< 1 when the weave stopped because its front stopped shrinking
+  bool stalled = false;             ///< the weave stopped because its front stopped shrinking
   std::map<std::string, std::size_t> applications;  ///< by rule name
   engine::EngineCounters counters;
   /// One line saying what is left when the weave did not close.
