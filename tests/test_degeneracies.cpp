@@ -231,6 +231,14 @@ TEST_CASE("pillowing the through-cells of degenerate weaves keeps the STC invari
     CAPTURE(faces);
     weave::WeaveOptions options;
     options.attempts = 2;
+    // Checked here after every step, whether or not LOOM_CHECK_INVARIANTS is set.
+    std::size_t steps = 0, broken = 0;
+    options.after_step = [&](const engine::Application&, const stc::Stc& st) {
+      ++steps;
+      broken += !st.check_invariants().empty();
+    };
     CHECK_NOTHROW(weave::mesh_surface(gen::randquad(faces, std::uint64_t(seed)), rules, options));
+    CHECK(steps > 0);
+    CHECK(broken == 0);
   }
 }
