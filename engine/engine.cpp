@@ -117,9 +117,9 @@ bool Engine::pop_best(std::size_t r, Entry& entry, Match& m) {
 bool Engine::try_rule_queue(std::size_t r, Application* applied) {
   Entry entry;
   Match m;
-  if (!pop_best(r, entry, m)) return false;
-  apply_rule(r, m, applied);
-  return true;
+  while (pop_best(r, entry, m))
+    if (apply_rule(r, m, applied)) return true;
+  return false;
 }
 
 bool Engine::try_random_tier(const std::vector<std::size_t>& tier, Application* applied) {
@@ -144,8 +144,7 @@ bool Engine::try_random_tier(const std::vector<std::size_t>& tier, Application* 
     Match m;
     ++counters_.match_attempts;
     if (!g_.alive(anchor) || !matcher_.first_at(rules_[r], anchor, m)) continue;
-    apply_rule(r, m, applied);
-    return true;
+    if (apply_rule(r, m, applied)) return true;
   }
 }
 
@@ -190,7 +189,7 @@ std::vector<Match> Engine::choices(std::size_t limit) {
   return out;
 }
 
-void Engine::apply(Match m, Application* applied) { apply_rule(rule_index(m.rule), m, applied); }
+bool Engine::apply(Match m, Application* applied) { return apply_rule(rule_index(m.rule), m, applied); }
 
 void Engine::undo(Graph::Checkpoint c) {
   ++counters_.undos;
@@ -201,27 +200,32 @@ void Engine::undo(Graph::Checkpoint c) {
   process_changes();
 }
 
-void Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
-  ++counters_.steps;
-  ++applications_[rules_[r].name];
-  if (applied) {
-    applied->step = counters_.steps;
-    applied->rule = &rules_[r];
+bool Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
+  if (applied) {  // read only when the rewrite acts
     applied->matched = m;
     applied->first_new = g_.id_bound();
   }
   log_.clear();
   g_.set_change_log(&log_);
+  bool acted;
   try {
-    apply_rewrite(g_, m, actions_);
+    acted = apply_rewrite(g_, m, actions_);
   } catch (...) {
     g_.set_change_log(nullptr);
     throw;
   }
   g_.set_change_log(nullptr);
-  if (applied) applied->result = m;
+  if (!acted) return false;
+  ++counters_.steps;
+  ++applications_[rules_[r].name];
+  if (applied) {
+    applied->step = counters_.steps;
+    applied->rule = &rules_[r];
+    applied->result = m;
+  }
   if (full_rescan_) rescan();
   else process_changes();
+  return true;
 }
 
 void Engine::trace(const Rule& rule, int var, Id element) {

@@ -46,15 +46,17 @@ public:
   /// if a sequence strategy names an unknown rule.
   Engine(Graph& graph, std::vector<Rule> rules, Actions actions, Strategy strategy);
 
-  /// Applies one match, chosen by the strategy. Returns false when no rule applies.
+  /// Applies one match, chosen by the strategy (a match whose action declines
+  /// is passed over). Returns false when no rule applies.
   bool step(Application* applied = nullptr);
 
   // --- choices and undo, for search with backtracking -------------------------
   /// Up to `limit` applicable matches, best first, from the highest-priority
   /// rules that have any (what step() would apply is the first).
   std::vector<Match> choices(std::size_t limit);
-  /// Applies a match (one of choices(), on the graph as it is now).
-  void apply(Match m, Application* applied = nullptr);
+  /// Applies a match (one of choices(), on the graph as it is now); false
+  /// when its action declined (nothing changed, nothing counted).
+  bool apply(Match m, Application* applied = nullptr);
   /// Opens a checkpoint of the graph; undo() goes back to it (and keeps it open).
   Graph::Checkpoint mark() { return g_.checkpoint(); }
   void undo(Graph::Checkpoint c);
@@ -98,7 +100,7 @@ private:
   bool pop_best(std::size_t rule, Entry& entry, Match& m);
   bool try_rule_queue(std::size_t rule, Application* applied);
   bool try_random_tier(const std::vector<std::size_t>& tier, Application* applied);
-  void apply_rule(std::size_t rule, Match& m, Application* applied);
+  bool apply_rule(std::size_t rule, Match& m, Application* applied);
   std::size_t rule_index(const Rule* r) const { return static_cast<std::size_t>(r - rules_.data()); }
 
   Graph& g_;

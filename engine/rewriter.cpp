@@ -8,7 +8,7 @@ namespace loom::engine {
 
 namespace {
 
-void apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval);
+bool apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval);
 
 void merge_into(Graph& g, Match& m, Id from, Id into) {
   if (from == into || from == no_element || into == no_element) return;
@@ -20,22 +20,30 @@ void merge_into(Graph& g, Match& m, Id from, Id into) {
 
 }  // namespace
 
-void apply_rewrite(Graph& g, Match& m, const Actions& actions) {
+bool apply_rewrite(Graph& g, Match& m, const Actions& actions) {
   const Rule& rule = *m.rule;
   const Matcher eval(g);
   for (const RewriteOp& op : rule.rewrite) {
     try {
-      apply_op(g, m, op, actions, eval);
+      if (apply_op(g, m, op, actions, eval)) continue;
+      if (&op != &rule.rewrite.front())
+        throw RuleError(rule.file, op.pos,
+                        fmt::format("rule '{}': action '{}' declined after earlier statements changed the graph; "
+                                    "call it first in the rewrite",
+                                    rule.name, op.action));
+      return false;
     } catch (const RuleError&) {
       throw;
     } catch (const std::exception& e) {
       throw RuleError(rule.file, op.pos, fmt::format("rule '{}' failed here: {}", rule.name, e.what()));
     }
   }
+  return true;
 }
 
 namespace {
-void apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval) {
+/// False when the op is a call whose action declined.
+bool apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval) {
   const Rule& rule = *m.rule;
   {
     switch (op.kind) {
@@ -70,11 +78,11 @@ void apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, c
       case RewriteOp::Kind::call: {
         std::vector<Id> args;
         for (int v : op.args) args.push_back(m.elements[v]);
-        (*actions.find(op.action))(g, args);
-        break;
+        return (*actions.find(op.action))(g, args);
       }
     }
   }
+  return true;
 }
 }  // namespace
 

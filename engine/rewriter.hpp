@@ -12,8 +12,11 @@
 
 namespace loom::engine {
 
-/// A named action: domain code a rule may call for what is not local.
-using Action = std::function<void(Graph& graph, std::span<const Id> args)>;
+/// A named action: domain code a rule may call for what is not local. It
+/// returns true when it acted; false when the state it was given does not call
+/// for it (it has then changed nothing, and the match does not count as an
+/// application). Only a rewrite's first statement may decline.
+using Action = std::function<bool(Graph& graph, std::span<const Id> args)>;
 
 class Actions {
 public:
@@ -32,8 +35,9 @@ private:
 /// element kept. `merge a into b` redirects every incidence to a onto b and
 /// removes a; `identify a, b` does the same keeping the element with the
 /// larger preferred attribute, else the one with more incoming incidences
-/// (so repeated identifications cost O(n log n) in all).
-void apply_rewrite(Graph& graph, Match& m, const Actions& actions);
+/// (so repeated identifications cost O(n log n) in all). Returns false when
+/// the rewrite's first statement is a call whose action declined.
+bool apply_rewrite(Graph& graph, Match& m, const Actions& actions);
 
 /// Throws RuleError if a rule calls an action that `actions` does not have.
 void check_actions(const Rule& rule, const Actions& actions);

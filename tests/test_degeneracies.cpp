@@ -20,6 +20,8 @@
 #include "src/gen/generators.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
+#include "src/weave/improper.hpp"
+#include "src/weave/pillow.hpp"
 #include "src/weave/pipeline.hpp"
 #include "src/weave/weave.hpp"
 #include "tests/support.hpp"
@@ -46,8 +48,10 @@ std::map<std::string, std::size_t> run(stc::Stc& s, std::vector<engine::Rule> ru
   return eng.applications();
 }
 
-/// Hexes and faces as DOT; elements with ids from `first_new` on are highlighted.
-void picture(const stc::Stc& s, const std::string& name, engine::Id first_new = engine::no_element) {
+/// Hexes and faces as DOT (only the hexes in `only` and their faces, when
+/// given); elements with ids from `first_new` on are highlighted.
+void picture(const stc::Stc& s, const std::string& name, engine::Id first_new = engine::no_element,
+             const std::vector<engine::Id>& only = {}) {
   const char* dir = std::getenv("LOOM_DOC_PICTURES");
   if (!dir) return;
   const auto& g = s.graph();
@@ -55,11 +59,18 @@ void picture(const stc::Stc& s, const std::string& name, engine::Id first_new = 
   engine::DotStyle style;
   style.graph_name = name;
   style.layout = "neato";
-  for (auto kind : {ids.hex, ids.face})
-    for (engine::Id e : g.members(kind)) {
-      style.only.insert(e);
-      if (first_new != engine::no_element && e >= first_new) style.highlight.insert(e);
-    }
+  std::vector<engine::Id> shown;
+  if (only.empty())
+    for (auto kind : {ids.hex, ids.face})
+      for (engine::Id e : g.members(kind)) shown.push_back(e);
+  for (engine::Id h : only) {
+    shown.push_back(h);
+    for (unsigned i = 0; i < 6; ++i) shown.push_back(s.hex_face(h, i));
+  }
+  for (engine::Id e : shown) {
+    style.only.insert(e);
+    if (first_new != engine::no_element && e >= first_new) style.highlight.insert(e);
+  }
   style.label = [&](engine::Id e) -> std::string {
     if (g.kind(e) == ids.hex) return fmt::format("hex {}", e);
     return s.is_boundary(e) ? fmt::format("quad {}", s.boundary_index(e)) : fmt::format("face {}", e);
@@ -241,4 +252,69 @@ TEST_CASE("pillowing the through-cells of degenerate weaves keeps the STC invari
     CHECK(steps > 0);
     CHECK(broken == 0);
   }
+}
+
+TEST_CASE("pillow_improper: a closed weave of Schneiders' pyramid with hexes meeting improperly is pillowed valid") {
+  // Seed 176 of the random strategy closes the pyramid in 52 hexes, 31 pairs
+  // of which meet improperly (mostly faces a b c d and a b c e sharing two
+  // edges); the weave here runs without pillow_improper, then the rule alone.
+  std::vector<engine::Rule> without;
+  for (auto& r : engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema))
+    if (r.name != "pillow_improper") without.push_back(r);
+  weave::WeaveOptions options;
+  options.strategy = engine::Strategy::parse("random");
+  options.strategy.seed = 176;
+  const QuadSurface surface = gen::schneiders();
+  stc::Stc s = stc::build_from_surface(surface);
+  auto woven = weave::weave(s, without, options);
+  REQUIRE(woven.closed);
+  CHECK(s.hexes() == 52);
+  auto before = dualize_and_check(s, surface);
+  REQUIRE(before.first_failure());
+  CHECK(before.first_failure()->number == 3);
+  CHECK(before.first_failure()->detail.find("31 such pairs") != std::string::npos);
+  // The pictures show the first pillow only: the hexes at the node where it
+  // parts two hexes, before and after, with the pillow hexes it adds.
+  const engine::Id first_new = s.graph().id_bound();
+  engine::Id at = engine::no_element;
+  {
+    engine::Engine eng(s.graph(), shipped({"pillow_improper"}), weave::weave_actions(s), engine::Strategy::parse("priority"));
+    engine::Application step;
+    std::vector<engine::Id> region;
+    std::pair<engine::Id, engine::Id> pair;
+    for (engine::Id n : s.graph().members(s.ids().node))
+      if (auto p = weave::improper_pair_at(s, n)) {
+        at = n;
+        pair = *p;
+        region = weave::hexes_at_node(s, n);
+        break;
+      }
+    REQUIRE(at != engine::no_element);
+    picture(s, "improper-before", engine::no_element, region);
+    REQUIRE(eng.step(&step));
+    REQUIRE(step.matched.elements[step.rule->anchor] == at);  // the lowest node id with an improper pair
+    region = weave::hexes_at_node(s, at);
+    for (engine::Id e = first_new; e < s.graph().id_bound(); ++e)
+      if (s.graph().alive(e) && s.graph().kind(e) == s.ids().hex) region.push_back(e);
+    picture(s, "improper-after", first_new, region);
+    auto first = weave::complete_hex_corners(s, pair.first), second = weave::complete_hex_corners(s, pair.second);
+    REQUIRE((first && second));
+    CHECK(weave::stc_hexes_meet_properly(s, pair.first, *first, pair.second, *second));
+  }
+  auto applied = run(s, shipped({"pillow_improper"}));
+  applied["pillow_improper"] += 1;
+  CHECK(applied["pillow_improper"] <= 31);  // at least one improper meeting fewer each
+  auto after = dualize_and_check(s, surface);
+  CHECK(after.combinatorial_valid());
+  CHECK(s.hexes() > 52);
+}
+
+TEST_CASE("pillow_improper declines on a valid weave and while whiskers are left") {
+  auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  auto r = weave::mesh_surface(gen::box(2, 2, 1), rules, {});
+  REQUIRE(r.combinatorially_valid());
+  CHECK(r.weave.applications.count("pillow_improper") == 0);
+  stc::Stc open = stc::build_from_surface(gen::schneiders());
+  CHECK(run(open, shipped({"pillow_improper"})).empty());  // every face a whisker: nothing to part yet
+  CHECK(open.hexes() == 0);
 }

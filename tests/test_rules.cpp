@@ -151,6 +151,47 @@ TEST_CASE("incremental matching agrees with a full rescan on weaves where every 
   for (const auto& r : rules) CHECK_MESSAGE(applied[r.name] > 0, r.name << " never applied: the case does not cover it");
 }
 
+TEST_CASE("a match whose action declines is passed over and not counted; declining after a change is an error") {
+  stc::Stc stc = stc::build_from_surface(gen::box(1, 1, 1));
+  std::set<engine::Id> asked;
+  engine::Actions actions;
+  // Acts on the second node it is asked about only.
+  actions.add("second", [&](engine::Graph& g, std::span<const engine::Id> args) {
+    asked.insert(args[0]);
+    if (asked.size() != 2) return false;
+    g.set(args[0], stc.ids().node_boundary, 7);
+    return true;
+  });
+  auto rules = engine::compile_rules("rule r { match { v: node where boundary == 1 } rewrite { call second(v) } }",
+                                     "r.rule", schema());
+  engine::Engine eng(stc.graph(), rules, actions, {});
+  REQUIRE(eng.step());
+  CHECK(asked.size() == 2);
+  CHECK(eng.applications().at("r") == 1);
+  CHECK(eng.counters().steps == 1);
+  // Every other node declines; each is asked once and nothing more is counted.
+  while (eng.step()) {
+  }
+  CHECK(asked.size() == stc.graph().size(stc.ids().node));
+  CHECK(eng.applications().at("r") == 1);
+  CHECK(eng.counters().steps == 1);
+
+  stc::Stc again = stc::build_from_surface(gen::box(1, 1, 1));
+  engine::Actions no;
+  no.add("no", [](engine::Graph&, std::span<const engine::Id>) { return false; });
+  auto late = engine::compile_rules("rule late { match { v: node where boundary == 1 } rewrite { v.boundary = 3\n call no(v) } }",
+                                    "late.rule", schema());
+  engine::Engine eng2(again.graph(), late, no, {});
+  try {
+    eng2.step();
+    FAIL("expected a RuleError");
+  } catch (const engine::RuleError& e) {
+    CHECK(std::string(e.what()) ==
+          "late.rule:2:2: rule 'late': action 'no' declined after earlier statements changed the graph; call it "
+          "first in the rewrite");
+  }
+}
+
 TEST_CASE("a new rule file in a temporary directory is applied without recompiling") {
   ScratchDir dir("rules");
   for (auto& f : std::filesystem::directory_iterator(weave::default_rules_dir()))

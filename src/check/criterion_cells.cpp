@@ -103,26 +103,6 @@ CriterionResult no_doublets(const HexMesh& mesh, const HexTopology& topo) {
   return hexes_meet_properly(mesh);
 }
 
-namespace {
-
-/// Whether the corners `mask` of a hex (bit k: corner k) are one of its
-/// edges (2 corners) or faces (4 corners).
-bool is_edge_or_face(unsigned mask) {
-  if (std::popcount(mask) == 2) {
-    for (auto [a, b] : kHexEdgeCorners)
-      if (mask == ((1u << a) | (1u << b))) return true;
-    return false;
-  }
-  if (std::popcount(mask) != 4) return false;
-  for (int lf = 0; lf < 6; ++lf) {
-    unsigned face = 0;
-    for (int k : kHexFaceCorners[lf]) face |= 1u << k;
-    if (mask == face) return true;
-  }
-  return false;
-}
-
-}  // namespace
 
 CriterionResult hexes_meet_properly(const HexMesh& mesh) {
   // Hexes at each node (CSR), then every pair meeting at some node.
@@ -155,7 +135,7 @@ CriterionResult hexes_meet_properly(const HexMesh& mesh) {
       for (int k = 0; k < 8; ++k)
         for (int j = 0; j < 8; ++j)
           if ((mine >> j & 1u) && mesh.hexes[g][k] == mesh.hexes[h][j]) theirs |= 1u << k;
-      if (is_edge_or_face(mine) && is_edge_or_face(theirs)) continue;
+      if (is_hex_edge_or_face(mine) && is_hex_edge_or_face(theirs)) continue;
       if (bad++ == 0)
         first = fmt::format("hexes {} and {} meet in {} nodes that are not one face, one edge or one node of both", h,
                             g, std::popcount(mine));

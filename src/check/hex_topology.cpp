@@ -1,6 +1,7 @@
 #include "src/check/hex_topology.hpp"
 
 #include <algorithm>
+#include <bit>
 
 #include "src/check/key_numbering.hpp"
 
@@ -43,6 +44,30 @@ HexTopology build_hex_topology(const HexMesh& mesh) {
   for (std::uint32_t item = 0; item < topo.hex_edges.size(); ++item)
     if (topo.edge_first[topo.hex_edges[item]] == kNoSide) topo.edge_first[topo.hex_edges[item]] = item;
   return topo;
+}
+
+bool is_hex_edge_or_face(unsigned mask) {
+  if (std::popcount(mask) == 2) {
+    for (auto [a, b] : kHexEdgeCorners)
+      if (mask == ((1u << a) | (1u << b))) return true;
+    return false;
+  }
+  if (std::popcount(mask) != 4) return false;
+  for (const auto& corners : kHexFaceCorners) {
+    unsigned face = 0;
+    for (int k : corners) face |= 1u << k;
+    if (mask == face) return true;
+  }
+  return false;
+}
+
+bool hexes_meet_properly(const Hex& a, const Hex& b) {
+  unsigned in_a = 0, in_b = 0;
+  for (int j = 0; j < 8; ++j)
+    for (int k = 0; k < 8; ++k)
+      if (a[j] == b[k]) in_a |= 1u << j, in_b |= 1u << k;
+  if (std::popcount(in_a) <= 1) return true;
+  return is_hex_edge_or_face(in_a) && is_hex_edge_or_face(in_b);
 }
 
 }  // namespace loom

@@ -38,6 +38,14 @@ struct HexTopology {
   bool is_boundary_face(std::uint32_t face) const { return face_hex_count[face] == 1; }
 };
 
+/// Whether corners `mask` of a hex (bit k: VTK corner k) are one of its
+/// edges (2 corners) or one of its faces (4 corners).
+bool is_hex_edge_or_face(unsigned corner_mask);
+
+/// Whether two hexes meet properly by their nodes: in nothing, one node, or
+/// one edge or one face of both (criterion 3 for one pair).
+bool hexes_meet_properly(const Hex& a, const Hex& b);
+
 /// Precondition: every hex has 8 distinct nodes, all < mesh.points.size()
 /// (criterion 1), and 12 * hexes fits in 32 bits.
 HexTopology build_hex_topology(const HexMesh& mesh);

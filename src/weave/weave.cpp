@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "src/weave/improper.hpp"
 #include "src/weave/pillow.hpp"
 
 namespace loom::weave {
@@ -34,6 +35,7 @@ engine::Actions weave_actions(stc::Stc& stc) {
   actions.add("place_hex_corner", [&stc](engine::Graph&, std::span<const engine::Id> args) {
     auto at = [&](engine::Id node) { return placed(stc, node, "place_hex_corner"); };
     stc.place(args[0], at(args[2]) + at(args[3]) + at(args[4]) - 2.0 * at(args[1]));
+    return true;
   });
   // place_off_face(n, a, b, d): n is the corner above a of a hex standing on
   // a front face a b . d (which faces away from the hex), at the face's
@@ -44,11 +46,13 @@ engine::Actions weave_actions(stc::Stc& stc) {
     Vec3 away = cross(ab, ad);
     double length = 0.5 * (norm(ab) + norm(ad)), size = norm(away);
     stc.place(args[0], size > 0 ? a - (length / size) * away : a);
+    return true;
   });
   // pillow_star(n): a pillow sheet around every hex at node n.
   actions.add("pillow_star", [&stc](engine::Graph&, std::span<const engine::Id> args) {
     auto star = hexes_at_node(stc, args[0]);
     insert_pillow(stc, star);
+    return true;
   });
   // pillow_doublet(h1, h2): a pillow sheet around h1 and the hexes across
   // h1's faces at the ends of the edges h1 shares with h2 (their faces
@@ -56,11 +60,22 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // would meet h2 in three nodes).
   actions.add("pillow_doublet", [&stc](engine::Graph&, std::span<const engine::Id> args) {
     insert_pillow(stc, doublet_shrink_set(stc, args[0], args[1]));
+    return true;
   });
   // split_pinched(n): one node per group of n's hexes that meet only at n;
   // each part's boundary flag is 1 exactly when it holds a boundary face.
   actions.add("split_pinched", [&stc](engine::Graph&, std::span<const engine::Id> args) {
     split_pinched_node(stc, args[0]);
+    return true;
+  });
+  // pillow_improper(n): once the weave has closed, a pillow sheet parting
+  // two hexes at n that meet improperly (improper.hpp); declines while
+  // whiskers are left (hexes still change), where n's hexes meet properly,
+  // and where no pillow would leave fewer improper meetings.
+  actions.add("pillow_improper", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+    if (stc.whiskers() > 0) return false;
+    auto pair = improper_pair_at(stc, args[0]);
+    return pair && pillow_improper_pair(stc, pair->first, pair->second) > 0;
   });
   return actions;
 }
@@ -115,8 +130,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
         auto alternatives = eng.choices(c.taken + 2);
         if (alternatives.size() > c.taken + 1) {
           ++result.backtracks;
-          eng.apply(std::move(alternatives[++c.taken]), &app);
-          after();
+          if (eng.apply(std::move(alternatives[++c.taken]), &app)) after();
           return true;
         }
       }
@@ -138,6 +152,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   };
   std::int64_t smallest_front = front();
   std::size_t since_smallest = 0;
+  bool closed_rescan = false;
   auto stalled = [&] {
     std::int64_t now = front();
     if (now < smallest_front) smallest_front = now, since_smallest = 0;
@@ -153,7 +168,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
     }
     if (eng.step(&app)) {
       after();
-      if (!stalled()) continue;
+      if (stc.whiskers() == 0 || !stalled()) continue;
       // Backtracking within the window cannot leave a front that has been
       // rolling for longer than the window: give up.
       result.stalled = true;
@@ -163,7 +178,15 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
       eng.release(choices.back().before);
       choices.pop_back();
     }
-    if (stc.whiskers() == 0 || !backtracking || !backtrack()) break;
+    if (stc.whiskers() == 0) {
+      // Rules that only act on a closed weave declined while it was open;
+      // now every anchor is worth another look, once.
+      if (closed_rescan) break;
+      closed_rescan = true;
+      eng.rescan();
+      continue;
+    }
+    if (!backtracking || !backtrack()) break;
   }
   while (!choices.empty()) {
     eng.release(choices.front().before);

@@ -1,0 +1,43 @@
+#pragma once
+// Hexes that meet improperly in a closed weave, and the pillow that parts them.
+//
+// Two hexes meet properly when they share nothing, one node, one edge or one
+// face of both, and a face they share is one STC face (criteria 2 and 3 in
+// validity.md). Weaves of hard surfaces (Schneiders' pyramid, small random
+// quadrangulations) close with hexes whose faces a b c d and a b c e share two
+// consecutive edges, or that meet in two nodes no edge joins. A pillow sheet
+// round one of the two hexes, or round it and one or two neighbours, splits
+// the shared nodes between the two sides; which set to pillow is decided by
+// trying them and keeping the one that leaves the fewest improper meetings.
+#include <optional>
+#include <span>
+#include <utility>
+
+#include "src/mesh/hex_mesh.hpp"
+#include "src/stc/stc.hpp"
+
+namespace loom::weave {
+
+/// The corners of `hex` in VTK order; nullopt while it is not complete (a
+/// face missing, a whisker face, or a degenerate corner).
+std::optional<Hex> complete_hex_corners(const stc::Stc& stc, stc::Id hex);
+
+/// Whether complete hexes a and b meet properly (see above).
+bool stc_hexes_meet_properly(const stc::Stc& stc, stc::Id a, const Hex& at_a, stc::Id b, const Hex& at_b);
+
+/// Two complete hexes at `node` that meet improperly (the first such pair in
+/// id order), or nullopt.
+std::optional<std::pair<stc::Id, stc::Id>> improper_pair_at(const stc::Stc& stc, stc::Id node);
+
+/// Improper meetings (pairs of hexes) that involve at least one of `hexes`.
+std::size_t improper_meetings_around(const stc::Stc& stc, std::span<const stc::Id> hexes);
+
+/// Pillows the set, among {h}, {h, n} and {h, n, m} for h = h1, h2 and
+/// neighbours n, m of h, after which h1 and h2 meet properly and the fewest
+/// improper meetings are left (the first such set on a tie), provided that
+/// is fewer than before. Returns the number of pillow hexes inserted; 0, and
+/// nothing changed, when no candidate lowers the count (so a weave can be
+/// pillowed at most as many times as it has improper meetings).
+std::size_t pillow_improper_pair(stc::Stc& stc, stc::Id h1, stc::Id h2);
+
+}  // namespace loom::weave
