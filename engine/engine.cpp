@@ -61,6 +61,13 @@ void Engine::rescan() {
       for (Id a : g_.members(rules_[r].vars[rules_[r].anchor].kind)) offer(r, a);
 }
 
+std::size_t Engine::retry_declined() {
+  auto declined = std::move(declined_);
+  declined_.clear();
+  for (auto [r, anchor] : declined) offer(r, anchor);
+  return declined.size();
+}
+
 void Engine::offer(std::size_t r, Id anchor) {
   const Rule& rule = rules_[r];
   RuleState& st = state_[r];
@@ -215,7 +222,10 @@ bool Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
     throw;
   }
   g_.set_change_log(nullptr);
-  if (!acted) return false;
+  if (!acted) {
+    declined_.emplace_back(r, m.elements[rules_[r].anchor]);
+    return false;
+  }
   ++counters_.steps;
   ++applications_[rules_[r].name];
   if (applied) {

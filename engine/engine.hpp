@@ -69,6 +69,10 @@ public:
   const std::map<std::string, std::size_t>& applications() const { return applications_; }
   /// Makes every element a candidate again (after the graph changed outside the engine).
   void rescan();
+  /// Offers again every match whose action declined since the last call
+  /// (they are otherwise looked at again only when something changes near
+  /// them); returns how many.
+  std::size_t retry_declined();
   /// The reference mode the tests compare the incremental one with: after
   /// every step, every element is a candidate again.
   void set_full_rescan(bool on) { full_rescan_ = on; }
@@ -122,6 +126,7 @@ private:
   bool full_rescan_ = false;
   EngineCounters counters_;
   std::map<std::string, std::size_t> applications_;
+  std::vector<std::pair<std::size_t, Id>> declined_;  ///< (rule, anchor)
 };
 
 }  // namespace loom::engine

@@ -26,6 +26,7 @@ Id Graph::add(KindId kind) {
     columns_[kind][c].push_back(schema_->attribute(spec.attributes[c]).default_value);
   ++kind_live_[kind];
   ++live_;
+  ++revision_;
   if (log_) log_->push_back({id, Change::Kind::created, 0});
   if (!open_.empty()) undo_.push_back({UndoRecord::Kind::created, id, 0, 0});
   return id;
@@ -37,6 +38,7 @@ void Graph::remove(Id e) {
   for (SlotId s = el.first_slot, end = s + slot_count(e); s < end; ++s) set_slot(s, no_element);
   while (el.in_head != no_slot) set_slot(el.in_head, no_element);
   el.alive = false;
+  ++revision_;
   if (log_) log_->push_back({e, Change::Kind::removed, 0});
   if (!open_.empty()) undo_.push_back({UndoRecord::Kind::removed, e, 0, 0});
   kind_members_[el.kind][el.local] = no_element;
@@ -55,6 +57,7 @@ std::vector<Id> Graph::members(KindId kind) const {
 void Graph::set_slot(SlotId s, Id target) {
   Slot& sl = slots_[s];
   if (sl.target == target) return;
+  ++revision_;
   if (log_) {
     auto port = slot_port(s);
     log_->push_back({sl.owner, Change::Kind::out, port});
@@ -110,6 +113,7 @@ void Graph::set(Id e, AttrId a, std::int32_t value) {
   const Element& el = elements_[e];
   std::int32_t& cell = columns_[el.kind][schema_->attribute(a).column][el.local];
   if (cell == value) return;
+  ++revision_;
   if (!open_.empty()) undo_.push_back({UndoRecord::Kind::attribute, e, static_cast<std::uint32_t>(cell), a});
   cell = value;
   if (log_) log_->push_back({e, Change::Kind::attribute, a});
@@ -117,6 +121,7 @@ void Graph::set(Id e, AttrId a, std::int32_t value) {
 
 std::vector<Id> Graph::compact() {
   if (!open_.empty()) throw std::logic_error("Graph::compact: a checkpoint is open");
+  ++revision_;
   std::vector<Id> remap(elements_.size(), no_element);
   Id next = 0;
   for (Id e = 0; e < elements_.size(); ++e)

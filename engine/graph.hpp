@@ -56,6 +56,9 @@ public:
   std::size_t incidence_count() const { return linked_; }
   /// Alive elements of `kind`, in id order (a snapshot).
   std::vector<Id> members(KindId kind) const;
+  /// Changes whenever the graph does: a cheap test for caches of what is
+  /// derived from it.
+  std::uint64_t revision() const { return revision_; }
 
   // --- ports --------------------------------------------------------------
   Id at(Id e, PortId p, unsigned i = 0) const { return slots_[slot(e, p, i)].target; }
@@ -163,6 +166,7 @@ private:
   std::deque<UndoRecord> undo_;
   std::size_t undo_base_ = 0;     ///< records dropped from the front of undo_
   std::vector<Checkpoint> open_;  ///< open checkpoints (absolute positions), oldest first
+  std::uint64_t revision_ = 0;
 
   std::shared_ptr<const Schema> schema_;
   std::vector<Element> elements_;

@@ -38,6 +38,7 @@ void Graph::drop_last_element() {
 
 void Graph::rollback(Checkpoint c) {
   if (c < undo_base_ || c > undo_base_ + undo_.size()) throw std::logic_error("Graph::rollback: unknown checkpoint");
+  ++revision_;
   auto saved = std::move(open_);
   open_.clear();  // replaying must not record
   while (undo_base_ + undo_.size() > c) {

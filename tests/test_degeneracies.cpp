@@ -282,8 +282,9 @@ TEST_CASE("pillow_improper: a closed weave of Schneiders' pyramid with hexes mee
     engine::Application step;
     std::vector<engine::Id> region;
     std::pair<engine::Id, engine::Id> pair;
+    weave::HexCornerCache corners(s);
     for (engine::Id n : s.graph().members(s.ids().node))
-      if (auto p = weave::improper_pair_at(s, n)) {
+      if (auto p = weave::improper_pair_at(s, n, corners)) {
         at = n;
         pair = *p;
         region = weave::hexes_at_node(s, n);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "src/check/hex_topology.hpp"
@@ -38,27 +37,23 @@ bool stc_hexes_meet_properly(const stc::Stc& stc, stc::Id a, const Hex& at_a, st
   return false;
 }
 
-namespace {
-
-/// Corners of complete hexes, computed once each.
-class CornerCache {
-public:
-  explicit CornerCache(const stc::Stc& stc) : stc_(stc) {}
-  const std::optional<Hex>& operator()(stc::Id hex) {
-    auto it = cache_.find(hex);
-    if (it == cache_.end()) it = cache_.emplace(hex, complete_hex_corners(stc_, hex)).first;
-    return it->second;
+const std::optional<Hex>& HexCornerCache::operator()(stc::Id hex) {
+  if (revision_ != stc_.graph().revision()) {
+    revision_ = stc_.graph().revision();
+    known_.assign(known_.size(), 0);
   }
+  if (hex >= known_.size()) {
+    known_.resize(stc_.graph().id_bound(), 0);
+    corners_.resize(known_.size());
+  }
+  if (!known_[hex]) {
+    corners_[hex] = complete_hex_corners(stc_, hex);
+    known_[hex] = 1;
+  }
+  return corners_[hex];
+}
 
-private:
-  const stc::Stc& stc_;
-  std::unordered_map<stc::Id, std::optional<Hex>> cache_;
-};
-
-}  // namespace
-
-std::optional<std::pair<stc::Id, stc::Id>> improper_pair_at(const stc::Stc& stc, stc::Id node) {
-  CornerCache corners(stc);
+std::optional<std::pair<stc::Id, stc::Id>> improper_pair_at(const stc::Stc& stc, stc::Id node, HexCornerCache& corners) {
   auto hexes = hexes_at_node(stc, node);
   for (std::size_t i = 0; i < hexes.size(); ++i) {
     const auto& a = corners(hexes[i]);
@@ -72,7 +67,7 @@ std::optional<std::pair<stc::Id, stc::Id>> improper_pair_at(const stc::Stc& stc,
 }
 
 std::size_t improper_meetings_around(const stc::Stc& stc, std::span<const stc::Id> hexes) {
-  CornerCache corners(stc);
+  HexCornerCache corners(stc);
   std::unordered_set<stc::Id> in_set(hexes.begin(), hexes.end());
   std::size_t count = 0;
   for (stc::Id a : hexes) {
@@ -128,7 +123,7 @@ std::optional<std::size_t> try_pillow(stc::Stc& stc, std::span<const stc::Id> se
     std::vector<stc::Id> near(set.begin(), set.end());
     for (stc::Id e = first_new; e < g.id_bound(); ++e)
       if (g.alive(e) && g.kind(e) == stc.ids().hex) near.push_back(e);
-    CornerCache corners(stc);
+    HexCornerCache corners(stc);
     const auto& a = corners(h1);
     const auto& b = corners(h2);
     if (a && b && stc_hexes_meet_properly(stc, h1, *a, h2, *b)) left = improper_meetings_around(stc, near);

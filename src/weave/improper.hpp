@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <utility>
+#include <vector>
 
 #include "src/mesh/hex_mesh.hpp"
 #include "src/stc/stc.hpp"
@@ -22,12 +23,26 @@ namespace loom::weave {
 /// face missing, a whisker face, or a degenerate corner).
 std::optional<Hex> complete_hex_corners(const stc::Stc& stc, stc::Id hex);
 
+/// complete_hex_corners of the hexes asked about, each computed once while the
+/// STC stays as it is (the cache empties itself when the graph's revision moves).
+class HexCornerCache {
+public:
+  explicit HexCornerCache(const stc::Stc& stc) : stc_(stc) {}
+  const std::optional<Hex>& operator()(stc::Id hex);
+
+private:
+  const stc::Stc& stc_;
+  std::uint64_t revision_ = 0;
+  std::vector<std::uint8_t> known_;
+  std::vector<std::optional<Hex>> corners_;
+};
+
 /// Whether complete hexes a and b meet properly (see above).
 bool stc_hexes_meet_properly(const stc::Stc& stc, stc::Id a, const Hex& at_a, stc::Id b, const Hex& at_b);
 
 /// Two complete hexes at `node` that meet improperly (the first such pair in
 /// id order), or nullopt.
-std::optional<std::pair<stc::Id, stc::Id>> improper_pair_at(const stc::Stc& stc, stc::Id node);
+std::optional<std::pair<stc::Id, stc::Id>> improper_pair_at(const stc::Stc& stc, stc::Id node, HexCornerCache& corners);
 
 /// Improper meetings (pairs of hexes) that involve at least one of `hexes`.
 std::size_t improper_meetings_around(const stc::Stc& stc, std::span<const stc::Id> hexes);

@@ -4,6 +4,7 @@
 #include <deque>
 #include <stdexcept>
 #include <map>
+#include <memory>
 
 #include <fmt/format.h>
 
@@ -18,6 +19,26 @@ std::filesystem::path default_rules_dir() {
 }
 
 namespace {
+
+/// Open hex sides over all faces, in O(1): each face lacks one hex per open
+/// side, so this is 2 per inner face + 1 per boundary face - 6 per hex; zero
+/// exactly when no whisker is left. The boundary faces are counted once, at
+/// construction: no rule adds or removes one.
+class OpenSides {
+public:
+  explicit OpenSides(const stc::Stc& stc) : stc_(stc) {
+    for (engine::Id f : stc.graph().members(stc.ids().face)) boundary_faces_ += stc.is_boundary(f);
+  }
+  std::int64_t operator()() const {
+    const auto& g = stc_.graph();
+    return 2 * static_cast<std::int64_t>(g.size(stc_.ids().face)) - boundary_faces_ -
+           6 * static_cast<std::int64_t>(g.size(stc_.ids().hex));
+  }
+
+private:
+  const stc::Stc& stc_;
+  std::int64_t boundary_faces_ = 0;
+};
 
 /// The position of a node, for the placement actions (which need one).
 Vec3 placed(const stc::Stc& stc, engine::Id node, const char* action) {
@@ -72,9 +93,10 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // two hexes at n that meet improperly (improper.hpp); declines while
   // whiskers are left (hexes still change), where n's hexes meet properly,
   // and where no pillow would leave fewer improper meetings.
-  actions.add("pillow_improper", [&stc](engine::Graph&, std::span<const engine::Id> args) {
-    if (stc.whiskers() > 0) return false;
-    auto pair = improper_pair_at(stc, args[0]);
+  actions.add("pillow_improper", [&stc, open_sides = OpenSides(stc), corners = std::make_shared<HexCornerCache>(stc)](
+                                     engine::Graph&, std::span<const engine::Id> args) {
+    if (open_sides() > 0) return false;
+    auto pair = improper_pair_at(stc, args[0], *corners);
     return pair && pillow_improper_pair(stc, pair->first, pair->second) > 0;
   });
   return actions;
@@ -116,9 +138,17 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   engine::Application app;
   std::deque<Choice> choices;
   const bool backtracking = options.max_backtracks > 0 && options.branching > 1 && options.backtrack_window > 0;
+  // Rules that act only on a closed weave decline while it is open; the
+  // matches they declined are offered again once, when it closes.
+  const OpenSides front(stc);
+  bool closed_once = false;
   auto after = [&] {
     stc.debug_check();
     if (options.after_step) options.after_step(app, stc);
+    if (!closed_once && front() == 0) {
+      closed_once = true;
+      eng.retry_declined();
+    }
   };
   // Alternatives are looked for only on a dead end, so a weave that never
   // gets stuck pays one checkpoint a step and nothing else.
@@ -139,20 +169,10 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
     }
     return false;
   };
-  // The front's size in O(1): every face lacks one hex per whisker side, so
-  // whiskers = (2 per inner face + 1 per boundary face) - 6 per hex. A weave
-  // whose front stops reaching new minima (crossings rolling round a front
-  // that never shrinks) is at a dead end as surely as one no rule applies to.
-  const auto& ids = stc.ids();
-  std::int64_t boundary_faces = 0;
-  for (engine::Id f : stc.graph().members(ids.face)) boundary_faces += stc.is_boundary(f);
-  auto front = [&] {
-    return 2 * static_cast<std::int64_t>(stc.graph().size(ids.face)) - boundary_faces -
-           6 * static_cast<std::int64_t>(stc.graph().size(ids.hex));
-  };
+  // A weave whose front stops reaching new minima (crossings rolling round a
+  // front that never shrinks) is at a dead end as surely as one no rule applies to.
   std::int64_t smallest_front = front();
   std::size_t since_smallest = 0;
-  bool closed_rescan = false;
   auto stalled = [&] {
     std::int64_t now = front();
     if (now < smallest_front) smallest_front = now, since_smallest = 0;
@@ -168,7 +188,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
     }
     if (eng.step(&app)) {
       after();
-      if (stc.whiskers() == 0 || !stalled()) continue;
+      if (front() == 0 || !stalled()) continue;
       // Backtracking within the window cannot leave a front that has been
       // rolling for longer than the window: give up.
       result.stalled = true;
@@ -178,15 +198,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
       eng.release(choices.back().before);
       choices.pop_back();
     }
-    if (stc.whiskers() == 0) {
-      // Rules that only act on a closed weave declined while it was open;
-      // now every anchor is worth another look, once.
-      if (closed_rescan) break;
-      closed_rescan = true;
-      eng.rescan();
-      continue;
-    }
-    if (!backtracking || !backtrack()) break;
+    if (stc.whiskers() == 0 || !backtracking || !backtrack()) break;
   }
   while (!choices.empty()) {
     eng.release(choices.front().before);
