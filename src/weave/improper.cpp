@@ -37,29 +37,23 @@ bool stc_hexes_meet_properly(const stc::Stc& stc, stc::Id a, const Hex& at_a, st
   return false;
 }
 
-const std::optional<Hex>& HexCornerCache::operator()(stc::Id hex) {
+std::optional<Hex> HexCornerCache::operator()(stc::Id hex) {
   if (revision_ != stc_.graph().revision()) {
     revision_ = stc_.graph().revision();
-    known_.assign(known_.size(), 0);
+    corners_.clear();
   }
-  if (hex >= known_.size()) {
-    known_.resize(stc_.graph().id_bound(), 0);
-    corners_.resize(known_.size());
-  }
-  if (!known_[hex]) {
-    corners_[hex] = complete_hex_corners(stc_, hex);
-    known_[hex] = 1;
-  }
-  return corners_[hex];
+  auto it = corners_.find(hex);
+  if (it == corners_.end()) it = corners_.emplace(hex, complete_hex_corners(stc_, hex)).first;
+  return it->second;
 }
 
 std::optional<std::pair<stc::Id, stc::Id>> improper_pair_at(const stc::Stc& stc, stc::Id node, HexCornerCache& corners) {
   auto hexes = hexes_at_node(stc, node);
   for (std::size_t i = 0; i < hexes.size(); ++i) {
-    const auto& a = corners(hexes[i]);
+    const auto a = corners(hexes[i]);
     if (!a) continue;
     for (std::size_t j = i + 1; j < hexes.size(); ++j) {
-      const auto& b = corners(hexes[j]);
+      const auto b = corners(hexes[j]);
       if (b && !stc_hexes_meet_properly(stc, hexes[i], *a, hexes[j], *b)) return std::pair{hexes[i], hexes[j]};
     }
   }
@@ -71,7 +65,7 @@ std::size_t improper_meetings_around(const stc::Stc& stc, std::span<const stc::I
   std::unordered_set<stc::Id> in_set(hexes.begin(), hexes.end());
   std::size_t count = 0;
   for (stc::Id a : hexes) {
-    const auto& at_a = corners(a);
+    const auto at_a = corners(a);
     if (!at_a) continue;
     std::vector<stc::Id> met;
     for (auto n : *at_a)
@@ -80,7 +74,7 @@ std::size_t improper_meetings_around(const stc::Stc& stc, std::span<const stc::I
     std::sort(met.begin(), met.end());
     met.erase(std::unique(met.begin(), met.end()), met.end());
     for (stc::Id b : met)
-      if (const auto& at_b = corners(b); at_b && !stc_hexes_meet_properly(stc, a, *at_a, b, *at_b)) ++count;
+      if (const auto at_b = corners(b); at_b && !stc_hexes_meet_properly(stc, a, *at_a, b, *at_b)) ++count;
   }
   return count;
 }
@@ -124,8 +118,8 @@ std::optional<std::size_t> try_pillow(stc::Stc& stc, std::span<const stc::Id> se
     for (stc::Id e = first_new; e < g.id_bound(); ++e)
       if (g.alive(e) && g.kind(e) == stc.ids().hex) near.push_back(e);
     HexCornerCache corners(stc);
-    const auto& a = corners(h1);
-    const auto& b = corners(h2);
+    const auto a = corners(h1);
+    const auto b = corners(h2);
     if (a && b && stc_hexes_meet_properly(stc, h1, *a, h2, *b)) left = improper_meetings_around(stc, near);
   } catch (const std::runtime_error&) {
     // Not a pillowable set (see insert_pillow): not a candidate.

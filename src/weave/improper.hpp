@@ -11,8 +11,8 @@
 // trying them and keeping the one that leaves the fewest improper meetings.
 #include <optional>
 #include <span>
+#include <unordered_map>
 #include <utility>
-#include <vector>
 
 #include "src/mesh/hex_mesh.hpp"
 #include "src/stc/stc.hpp"
@@ -28,13 +28,12 @@ std::optional<Hex> complete_hex_corners(const stc::Stc& stc, stc::Id hex);
 class HexCornerCache {
 public:
   explicit HexCornerCache(const stc::Stc& stc) : stc_(stc) {}
-  const std::optional<Hex>& operator()(stc::Id hex);
+  std::optional<Hex> operator()(stc::Id hex);
 
 private:
   const stc::Stc& stc_;
   std::uint64_t revision_ = 0;
-  std::vector<std::uint8_t> known_;
-  std::vector<std::optional<Hex>> corners_;
+  std::unordered_map<stc::Id, std::optional<Hex>> corners_;
 };
 
 /// Whether complete hexes a and b meet properly (see above).
