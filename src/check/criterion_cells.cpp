@@ -103,7 +103,6 @@ CriterionResult no_doublets(const HexMesh& mesh, const HexTopology& topo) {
   return hexes_meet_properly(mesh);
 }
 
-
 CriterionResult hexes_meet_properly(const HexMesh& mesh) {
   // Hexes at each node (CSR), then every pair meeting at some node.
   const std::size_t nodes = mesh.points.size();
