@@ -21,9 +21,10 @@ std::filesystem::path default_rules_dir() {
 namespace {
 
 /// Open hex sides over all faces, in O(1): each face lacks one hex per open
-/// side, so this is 2 per inner face + 1 per boundary face - 6 per hex, and
-/// positive while any whisker is left. The boundary faces are counted once,
-/// at construction: no rule adds or removes one.
+/// side, so this is 2 per inner face + 1 per boundary face - 6 per hex (each
+/// hex names six faces that name it back: STC invariant 5), zero exactly when
+/// no whisker is left. The boundary faces are counted once, at construction:
+/// no rule adds or removes one.
 class OpenSides {
 public:
   explicit OpenSides(const stc::Stc& stc) : stc_(stc) {
