@@ -254,7 +254,7 @@ double quad_area(const QuadSurface& s, const Quad& q) {
 
 }  // namespace
 
-TEST_CASE("randquad: F quads on the unit sphere, degree >= 3, valid for every even F up to 200") {
+TEST_CASE("randquad: F quads on the unit sphere, degree >= 3, no two sharing a diagonal, valid for every even F up to 200") {
   std::size_t quads = 0, folded = 0;
   for (int f = 6; f <= 200; f += 2)
     for (std::uint64_t seed = 0; seed < 10; ++seed) {
@@ -264,6 +264,7 @@ TEST_CASE("randquad: F quads on the unit sphere, degree >= 3, valid for every ev
       REQUIRE(s.quads.size() == std::size_t(f));
       CHECK(s.points.size() == std::size_t(f + 2));  // V - E + F = 2 with E = 2F
       CHECK(min_degree(s) >= 3);
+      CHECK(!quads_meeting_improperly(s));
       for (const Vec3& p : s.points) CHECK(norm(p) == doctest::Approx(1.0));
       CHECK(min_node_distance(s) > 1e-6);
       double smallest = INFINITY;

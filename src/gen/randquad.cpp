@@ -2,11 +2,14 @@
 #include <random>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "src/gen/generator_args.hpp"
 #include "src/gen/generators.hpp"
 #include "src/gen/random_draws.hpp"
 #include "src/gen/sphere_embedding.hpp"
 #include "src/gen/sphere_quadrangulation.hpp"
+#include "src/mesh/surface_validation.hpp"
 #include "src/util/error.hpp"
 
 namespace loom::gen {
@@ -16,6 +19,9 @@ namespace {
 // Attempted mixing moves after each growth step, and per quad at the end.
 constexpr std::uint64_t kMixingAttemptsPerGrowth = 8;
 constexpr std::uint64_t kMixingAttemptsPerQuad = 20;
+// Rounds of mixing (each as long as the final one) allowed to part quads
+// that share a diagonal; none of the shipped corpus needs more than a few.
+constexpr int kMixingRoundsForProperQuads = 1000;
 // Random picks tried for a k = 2 flip before growing by a k = 1 flip instead.
 constexpr int kHexFlip2Picks = 8;
 
@@ -89,6 +95,14 @@ QuadSurface randquad(int faces, std::uint64_t seed) {
     walk.mix(kMixingAttemptsPerGrowth);
   }
   walk.mix(kMixingAttemptsPerQuad * target);
+  // Two quads sharing a diagonal of one can bound no valid hex mesh
+  // (surface_validation.hpp): mix on until there are none.
+  for (int round = 0; quads_meeting_improperly({{}, walk.mesh().quads()}); ++round) {
+    if (round == kMixingRoundsForProperQuads)
+      throw std::logic_error(fmt::format("randquad {} {}: two quads still share a diagonal after {} rounds of mixing",
+                                         faces, seed, round));
+    walk.mix(kMixingAttemptsPerQuad * target);
+  }
   return {embed_on_sphere(walk.mesh().quads(), walk.mesh().node_count(), walk.rng()), walk.mesh().quads()};
 }
 

@@ -4,8 +4,10 @@
 #include "src/mesh/surface_validation.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numeric>
 #include <vector>
@@ -256,6 +258,20 @@ void check_even_quad_count(const QuadSurface& s, const std::string& where) {
              "subdivide the surface to an even count (splitting every quad into four does)");
 }
 
+void check_quads_meet_properly(const QuadSurface& s, const std::string& where) {
+  const auto pair = quads_meeting_improperly(s);
+  if (!pair) return;
+  const Quad &a = s.quads[pair->first], &b = s.quads[pair->second];
+  std::vector<std::uint32_t> shared;
+  for (std::uint32_t n : a)
+    if (std::find(b.begin(), b.end(), n) != b.end()) shared.push_back(n);
+  fail_input(where,
+             fmt::format("quads {} ({}) and {} ({}) share nodes {} but not as one common edge: the hexes on them "
+                         "would meet in a diagonal of one, so no valid hex mesh has this boundary",
+                         pair->first, nodes_of(a), pair->second, nodes_of(b), fmt::join(shared, ", ")),
+             "refine the surface there (splitting every quad into four parts them)");
+}
+
 // Drops nodes no quad uses; returns how many were dropped.
 std::size_t drop_unused_nodes(QuadSurface& s) {
   std::vector<std::uint32_t> kept = used_nodes(s);
@@ -305,6 +321,7 @@ SurfaceSummary validate_surface(QuadSurface& surface, const std::string& where, 
   check_orientation(surface, halves, where);
   check_single_component(surface, halves, where);
   check_even_quad_count(surface, where);
+  check_quads_meet_properly(surface, where);
 
   summary.unused_nodes = drop_unused_nodes(surface) - summary.welded_nodes;
   if (signed_volume_times_6(surface) < 0) {
@@ -318,6 +335,34 @@ SurfaceSummary validate_surface(QuadSurface& surface, const std::string& where, 
                      static_cast<long long>(summary.quads);
   summary.genus = static_cast<int>((2 - euler) / 2);
   return summary;
+}
+
+std::optional<std::pair<std::size_t, std::size_t>> quads_meeting_improperly(const QuadSurface& s) {
+  std::vector<std::vector<std::uint32_t>> at(s.points.size());
+  for (std::uint32_t q = 0; q < s.quads.size(); ++q)
+    for (std::uint32_t n : s.quads[q])
+      if (n >= at.size()) at.resize(n + 1);
+  for (std::uint32_t q = 0; q < s.quads.size(); ++q)
+    for (std::uint32_t n : s.quads[q]) at[n].push_back(q);
+  auto corners_of = [&](const Quad& quad, const Quad& other) {
+    unsigned mask = 0;
+    for (int k = 0; k < 4; ++k)
+      if (std::find(other.begin(), other.end(), quad[k]) != other.end()) mask |= 1u << k;
+    return mask;
+  };
+  // Shared corners are fine when they are none, one, or two adjacent ones.
+  auto proper = [](unsigned mask) {
+    const int count = std::popcount(mask);
+    return count <= 1 || (count == 2 && mask != 0b0101 && mask != 0b1010);
+  };
+  for (std::uint32_t q = 0; q < s.quads.size(); ++q)
+    for (std::uint32_t n : s.quads[q])
+      for (std::uint32_t other : at[n]) {
+        if (other <= q) continue;
+        if (!proper(corners_of(s.quads[q], s.quads[other])) || !proper(corners_of(s.quads[other], s.quads[q])))
+          return std::pair<std::size_t, std::size_t>{q, other};
+      }
+  return std::nullopt;
 }
 
 }  // namespace loom

@@ -2,7 +2,9 @@
 // Decides whether a quad surface can bound a hex mesh of a solid, and says
 // precisely why not.
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "src/mesh/quad_surface.hpp"
 
@@ -29,10 +31,19 @@ struct SurfaceSummary {
 /// quads; coincident nodes (unless welded); non-manifold edges (more
 /// than two quads); open boundary (count of boundary edges); non-manifold
 /// vertices (a vertex whose quads form several fans); inconsistent orientation;
-/// several components; an odd number of quads (no hex mesh can exist).
+/// several components; an odd number of quads (no hex mesh can exist); two
+/// quads meeting improperly (see quads_meeting_improperly).
 /// Unused nodes are dropped (counted in the summary). Surfaces oriented
 /// inward are flipped to face outward.
 SurfaceSummary validate_surface(QuadSurface& surface, const std::string& where,
                                 const SurfaceCheckOptions& options = {});
+
+/// Two quads (by index, the first found in quad order) that share two or more
+/// nodes other than as one common edge: two opposite corners of one of them,
+/// say. No hex mesh whose hexes meet properly (criterion 3 of validity.md) has
+/// them as boundary quads: the hexes on them would share a diagonal of one,
+/// which only a shared face could hold. nullopt when every two quads meet in
+/// one edge, one node or not at all.
+std::optional<std::pair<std::size_t, std::size_t>> quads_meeting_improperly(const QuadSurface& surface);
 
 }  // namespace loom
