@@ -20,7 +20,8 @@ namespace {
 constexpr std::uint64_t kMixingAttemptsPerGrowth = 8;
 constexpr std::uint64_t kMixingAttemptsPerQuad = 20;
 // Rounds of mixing (each as long as the final one) allowed to part quads
-// that share a diagonal; none of the shipped corpus needs more than a few.
+// that share a diagonal: a bound, so a walk that cannot part them fails
+// loudly instead of looping.
 constexpr int kMixingRoundsForProperQuads = 1000;
 // Random picks tried for a k = 2 flip before growing by a k = 1 flip instead.
 constexpr int kHexFlip2Picks = 8;
