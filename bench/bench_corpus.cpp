@@ -136,6 +136,18 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
   };
   auto start = std::chrono::steady_clock::now();
   std::size_t seen = 0;
+  // What the attempts a timeout cuts short left behind, so that the row
+  // still says what stops the input: the attempt with the fewest whiskers.
+  std::size_t attempt = 1, open_attempts = 0, fewest_attempt = 0, fewest = 0;
+  std::string fewest_left;
+  options.before_attempt = [&](std::size_t next, const engine::Strategy&, const weave::WeaveResult& previous) {
+    if (!previous.closed && (!fewest_attempt || previous.whiskers_left < fewest)) {
+      fewest_attempt = attempt, fewest = previous.whiskers_left;
+      fewest_left = previous.left;
+    }
+    open_attempts += !previous.closed;
+    attempt = next;
+  };
   if (timeout > 0)
     options.after_step = [&](const engine::Application&, const stc::Stc&) {
       if (++seen % 16 == 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout)
@@ -197,7 +209,12 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
   } catch (const Timeout& t) {
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.steps = t.steps;
-    r.note = fmt::format("timeout: stopped after {:.0f} s and {} applications", timeout, t.steps);
+    r.note = fmt::format("timeout: stopped after {:g} s and {} applications, in attempt {}", timeout, t.steps, attempt);
+    if (attempt > 1)
+      r.note += fmt::format("; of the {} before it, {} closed without passing criteria 1-6", attempt - 1,
+                            attempt - 1 - open_attempts);
+    if (fewest_attempt)
+      r.note += fmt::format(", and attempt {} left the fewest: {}", fewest_attempt, fewest_left);
   } catch (const std::exception& e) {
     r.note = std::string("error: ") + e.what();
   }
@@ -265,10 +282,15 @@ int run(const Options& o) {
 
   auto inputs = corpus(o.randquad_max, o.dir);
   const auto& cfgs = configs();
+  auto selected = [&](std::size_t i, std::size_t c) {
+    bool named = o.only.empty() || inputs[i].name.find(o.only) != std::string::npos ||
+                 cfgs[c].name.find(o.only) != std::string::npos;
+    return named && (i * cfgs.size() + c) % std::size_t(o.shard_n) == std::size_t(o.shard_k - 1);
+  };
   if (o.list) {
     for (std::size_t i = 0; i < inputs.size(); ++i)
       for (std::size_t c = 0; c < cfgs.size(); ++c)
-        if ((i * cfgs.size() + c) % std::size_t(o.shard_n) == std::size_t(o.shard_k - 1))
+        if (selected(i, c))
           std::cout << i * cfgs.size() + c << ' ' << inputs[i].name << ' ' << cfgs[c].name << '\n';
     return 0;
   }
@@ -277,8 +299,8 @@ int run(const Options& o) {
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     std::vector<std::size_t> mine;
     for (std::size_t c = 0; c < cfgs.size(); ++c)
-      if ((i * cfgs.size() + c) % std::size_t(o.shard_n) == std::size_t(o.shard_k - 1)) mine.push_back(c);
-    if (mine.empty() || (!o.only.empty() && inputs[i].name.find(o.only) == std::string::npos)) continue;
+      if (selected(i, c)) mine.push_back(c);
+    if (mine.empty()) continue;
     std::optional<QuadSurface> surface;
     std::string error;
     try {

@@ -141,7 +141,7 @@ int run(const Options& o) {
     }
   };
 
-  options.before_attempt = [&](std::size_t, const loom::engine::Strategy&) {
+  options.before_attempt = [&](std::size_t, const loom::engine::Strategy&, const loom::weave::WeaveResult&) {
     trace.clear();
     if (steps) steps->clear();
   };

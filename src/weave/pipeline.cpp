@@ -83,7 +83,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     if (r.combinatorially_valid() || r.attempts >= options.attempts) break;
     attempt.strategy = engine::Strategy::parse("random");
     attempt.strategy.seed = first_seed + r.attempts;
-    if (options.before_attempt) options.before_attempt(r.attempts + 1, attempt.strategy);
+    if (options.before_attempt) options.before_attempt(r.attempts + 1, attempt.strategy, r.weave);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

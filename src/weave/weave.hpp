@@ -15,6 +15,8 @@
 
 namespace loom::weave {
 
+struct WeaveResult;
+
 struct WeaveOptions {
   engine::Strategy strategy;
   /// Stop after this many applications (0: 200 per initial face plus 10,000).
@@ -30,8 +32,9 @@ struct WeaveOptions {
   /// (after the strategy's own seed when it is random), up to this many
   /// weaves in all. Deterministic: the same attempts run in the same order.
   std::size_t attempts = 1;
-  /// Called before each attempt but the first (a trace starts again).
-  std::function<void(std::size_t attempt, const engine::Strategy&)> before_attempt;
+  /// Called before each attempt but the first (a trace starts again), with
+  /// the weave of the attempt before it.
+  std::function<void(std::size_t attempt, const engine::Strategy&, const WeaveResult& previous)> before_attempt;
   /// Called after every application (trace, pictures, progress).
   std::function<void(const engine::Application&, const stc::Stc&)> after_step;
 };
