@@ -136,3 +136,28 @@ TEST_CASE("cross never wraps a hex around the convex corner of another (no tripl
   auto unguarded = engine::compile_rules(text, "unguarded.rule", *stc::StcSchema::get().schema);
   CHECK(matcher.first_at(unguarded.front(), n, m));
 }
+
+TEST_CASE("each new attempt is told how the one before it ended") {
+  // The spindle does not close under the shipped rules: every attempt stops
+  // with whiskers left, and the next one is told what they were.
+  weave::WeaveOptions options;
+  options.attempts = 3;
+  std::vector<std::size_t> attempts;
+  std::vector<weave::WeaveResult> before;
+  options.before_attempt = [&](std::size_t attempt, const engine::Strategy& strategy,
+                               const weave::WeaveResult& previous) {
+    CHECK(strategy.kind == engine::Strategy::Kind::random);
+    attempts.push_back(attempt);
+    before.push_back(previous);
+  };
+  auto r = weave::mesh_surface(gen::spindle(), shipped_rules(), options);
+  REQUIRE_FALSE(r.weave.closed);
+  CHECK(r.attempts == 3);
+  CHECK(attempts == std::vector<std::size_t>{2, 3});
+  REQUIRE(before.size() == 2);
+  for (const auto& previous : before) {
+    CHECK_FALSE(previous.closed);
+    CHECK(previous.whiskers_left > 0);
+    CHECK(previous.left.find("whiskers (open front faces) left") != std::string::npos);
+  }
+}
