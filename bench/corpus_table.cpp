@@ -111,7 +111,7 @@ std::string summary_md(const std::vector<Row>& rows, std::string* best_out = nul
   out += md_header(head);
   std::string best;
   double best_rate = -1;
-  std::size_t best_closed = 0;
+  std::size_t best_closed = 0, best_comb = 0;
   for (const auto& c : cfgs) {
     std::size_t runs = 0, closed = 0, comb = 0, valid = 0, rq = 0, rq_closed = 0, bt = 0, mism = 0, errors = 0;
     double secs = 0;
@@ -135,7 +135,9 @@ std::string summary_md(const std::vector<Row>& rows, std::string* best_out = nul
                                fmt::format("{:.1f}", secs)});
     out += md_row(cells);
     double key = rq ? double(rq_closed) / double(rq) : double(closed) / double(runs);
-    if (key > best_rate || (key == best_rate && closed > best_closed)) best = c, best_rate = key, best_closed = closed;
+    // Ties go to the configuration whose closures pass criteria 1-6 most often.
+    if (key > best_rate || (key == best_rate && (comb > best_comb || (comb == best_comb && closed > best_closed))))
+      best = c, best_rate = key, best_closed = closed, best_comb = comb;
   }
   out += "\n";
   if (best_out) *best_out = best;
