@@ -338,10 +338,11 @@ SurfaceSummary validate_surface(QuadSurface& surface, const std::string& where, 
 }
 
 std::optional<std::pair<std::size_t, std::size_t>> quads_meeting_improperly(const QuadSurface& s) {
-  std::vector<std::vector<std::uint32_t>> at(s.points.size());
-  for (std::uint32_t q = 0; q < s.quads.size(); ++q)
-    for (std::uint32_t n : s.quads[q])
-      if (n >= at.size()) at.resize(n + 1);
+  // Sized by the quads, not the points: randquad asks before it has points.
+  std::uint32_t nodes = 0;
+  for (const Quad& quad : s.quads)
+    for (std::uint32_t n : quad) nodes = std::max(nodes, n + 1);
+  std::vector<std::vector<std::uint32_t>> at(nodes);
   for (std::uint32_t q = 0; q < s.quads.size(); ++q)
     for (std::uint32_t n : s.quads[q]) at[n].push_back(q);
   auto corners_of = [&](const Quad& quad, const Quad& other) {
