@@ -107,13 +107,15 @@ std::string summary_md(const std::vector<Row>& rows, std::string* best_out = nul
   out += "### Per configuration\n\n";
   std::vector<std::string> head = {"config", "runs", "closed", "valid 1-6", "valid 1-7", "randquad closed"};
   for (const auto& b : kBands) head.push_back("F " + b.name());
-  head.insert(head.end(), {"backtracks", "recheck mismatches", "errors/timeouts", "seconds"});
+  head.insert(head.end(), {"valid 1-6 with fill", "randquad valid 1-6 with fill", "backtracks", "recheck mismatches",
+                           "errors/timeouts", "seconds"});
   out += md_header(head);
   std::string best;
   double best_rate = -1;
   std::size_t best_closed = 0, best_comb = 0;
   for (const auto& c : cfgs) {
     std::size_t runs = 0, closed = 0, comb = 0, valid = 0, rq = 0, rq_closed = 0, bt = 0, mism = 0, errors = 0;
+    std::size_t with_fill = 0, rq_with_fill = 0;
     double secs = 0;
     std::vector<std::size_t> bn(kBands.size()), bc(kBands.size());
     for (const auto& r : rows) {
@@ -121,9 +123,10 @@ std::string summary_md(const std::vector<Row>& rows, std::string* best_out = nul
       ++runs;
       closed += r.closed, comb += r.comb_valid, valid += r.valid, bt += r.backtracks, secs += r.seconds;
       mism += r.recheck.starts_with("MISMATCH");
+      with_fill += r.comb_valid || r.filled;
       errors += r.note.starts_with("error:") || r.note.starts_with("timeout:");
       if (r.family == "randquad") {
-        ++rq, rq_closed += r.closed;
+        ++rq, rq_closed += r.closed, rq_with_fill += r.comb_valid || r.filled;
         for (std::size_t b = 0; b < kBands.size(); ++b)
           if (r.faces >= kBands[b].lo && r.faces <= kBands[b].hi) ++bn[b], bc[b] += r.closed;
       }
@@ -131,8 +134,8 @@ std::string summary_md(const std::vector<Row>& rows, std::string* best_out = nul
     std::vector<std::string> cells = {c, std::to_string(runs), rate(closed, runs), rate(comb, runs),
                                       rate(valid, runs), rate(rq_closed, rq)};
     for (std::size_t b = 0; b < kBands.size(); ++b) cells.push_back(rate(bc[b], bn[b]));
-    cells.insert(cells.end(), {std::to_string(bt), std::to_string(mism), std::to_string(errors),
-                               fmt::format("{:.1f}", secs)});
+    cells.insert(cells.end(), {rate(with_fill, runs), rate(rq_with_fill, rq), std::to_string(bt), std::to_string(mism),
+                               std::to_string(errors), fmt::format("{:.1f}", secs)});
     out += md_row(cells);
     double key = rq ? double(rq_closed) / double(rq) : double(closed) / double(runs);
     // Ties go to the configuration whose closures pass criteria 1-6 most often.
@@ -145,8 +148,14 @@ std::string summary_md(const std::vector<Row>& rows, std::string* best_out = nul
     out += fmt::format("Closes most: **{}** ({:.1f}% of randquad; {} runs closed in all).\n\n", best,
                        100.0 * best_rate, best_closed);
     std::vector<const Row*> fails;
+    std::size_t filled = 0, unfilled = 0, rq_runs = 0, rq_meshed = 0;
     for (const auto& r : rows)
-      if (r.config == best && !r.comb_valid) fails.push_back(&r);
+      if (r.config == best) {
+        if (!r.comb_valid) fails.push_back(&r), ++(r.filled ? filled : unfilled);
+        if (r.family == "randquad") ++rq_runs, rq_meshed += r.comb_valid || r.filled;
+      }
+    out += fmt::format("With the constructive fill where its weave gives no mesh passing criteria 1-6: {} of randquad "
+                       "({} runs filled, {} left without a mesh).\n\n", rate(rq_meshed, rq_runs), filled, unfilled);
     if (!fails.empty()) {
       out += fmt::format("What stops {} ({} runs without a mesh passing criteria 1-6; up to 12 shown, smallest first):\n\n",
                          best, fails.size());

@@ -16,7 +16,7 @@ namespace loom::bench {
 inline const std::vector<std::string> kColumns = {
     "row", "input", "family", "faces", "quads", "config", "closed", "valid", "comb_valid", "hexes", "steps",
     "cross", "seam", "other_rules", "backtracks", "whiskers_left", "degeneracies", "pillows", "min_sj", "mean_sj",
-    "below_0_2", "seconds", "recheck", "note"};
+    "below_0_2", "seconds", "recheck", "filled", "fill_hexes", "fill_seconds", "note"};
 
 struct Row {
   std::size_t row = 0;
@@ -33,6 +33,11 @@ struct Row {
   std::size_t below_0_2 = 0;
   double seconds = 0;
   std::string recheck;  ///< "ok", "MISMATCH: ...", or "" (no mesh)
+  /// The weave gave no mesh passing criteria 1-6 and the constructive fill
+  /// did (src/fill): its hexes and seconds (not counted in `seconds`).
+  bool filled = false;
+  std::size_t fill_hexes = 0;
+  double fill_seconds = 0;
   std::string note;     ///< why it failed (the weave's `left`, a failure, an exception)
 
   std::vector<std::string> fields() const {
@@ -41,7 +46,8 @@ struct Row {
             closed ? "yes" : "no", valid ? "yes" : "no", comb_valid ? "yes" : "no", std::to_string(hexes),
             std::to_string(steps), std::to_string(cross), std::to_string(seam), other_rules,
             std::to_string(backtracks), std::to_string(whiskers_left), degeneracies, pillows, opt(min_sj),
-            opt(mean_sj), std::to_string(below_0_2), fmt::format("{:.4f}", seconds), recheck, note};
+            opt(mean_sj), std::to_string(below_0_2), fmt::format("{:.4f}", seconds), recheck,
+            filled ? "yes" : "no", std::to_string(fill_hexes), fmt::format("{:.4f}", fill_seconds), note};
   }
   static Row from(const std::vector<std::string>& f) {
     if (f.size() != kColumns.size())
@@ -79,6 +85,9 @@ struct Row {
     r.below_0_2 = num();
     r.seconds = std::stod(str());
     r.recheck = str();
+    r.filled = yes();
+    r.fill_hexes = num();
+    r.fill_seconds = std::stod(str());
     r.note = str();
     return r;
   }

@@ -32,7 +32,7 @@ struct Options {
   std::string surface, output, rules, strategy = "priority", dot_dir, trace, report;
   std::uint64_t seed = 0;
   std::size_t attempts = 16;
-  bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false;
+  bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false, no_fill = false;
 };
 
 /// A broken rule is bad input: one line naming file:line:column.
@@ -86,7 +86,9 @@ nlohmann::json report_json(const Options& o, const loom::weave::MeshingResult& r
   j["steps"] = r.weave.steps;
   j["rule_applications"] = r.weave.applications;
   j["whiskers_left"] = r.weave.whiskers_left;
+  j["filled"] = r.filled;
   j["hexes"] = r.stc.hexes();
+  j["mesh_hexes"] = r.mesh ? r.mesh->hexes.size() : 0;
   j["sheets"] = r.stc.sheets();
   j["chords"] = r.stc.chords();
   j["valid"] = r.check && r.check->valid();
@@ -103,6 +105,7 @@ nlohmann::json report_json(const Options& o, const loom::weave::MeshingResult& r
   j["seconds"] = r.seconds;
   if (!r.weave.closed) j["left"] = r.weave.left;
   if (!r.failure.empty()) j["failure"] = r.failure;
+  if (!r.fill_failure.empty()) j["fill_failure"] = r.fill_failure;
   return j;
 }
 
@@ -126,6 +129,11 @@ int run(const Options& o) {
   loom::weave::WeaveOptions options;
   options.strategy = parse_strategy(o, rules);
   options.attempts = o.attempts;
+  std::vector<loom::fill::Cap> caps;
+  if (!o.no_fill) {
+    caps = loom::fill::load_caps(loom::fill::default_caps_dir());
+    options.fill_caps = &caps;
+  }
 
   std::string trace;
   std::optional<loom::weave::StepDumper> steps;
@@ -160,17 +168,24 @@ int run(const Options& o) {
     loom::write_text_atomically(o.report, report_json(o, result, result.strategy).dump(2) + "\n");
   if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir);
 
-  if (!result.weave.closed) {
-    std::cerr << "loom: weave did not close" << (result.attempts > 1 ? fmt::format(" in {} attempts", result.attempts) : "")
-              << ": " << result.weave.left << "; try another --strategy or add rules\n";
-    if (o.partial) write_partial(o.output, result.stc);
-    return 1;
-  }
   if (!result.combinatorially_valid()) {
     const auto* fail = result.check ? result.check->first_failure() : nullptr;
-    std::cerr << "loom: weave closed but the result is not a valid hex mesh: "
-              << (fail ? fmt::format("criterion {} ({}) fails: {}", fail->number, fail->name, fail->detail) : result.failure)
-              << "; nothing written\n";
+    std::string why = fail ? fmt::format("criterion {} ({}) fails: {}", fail->number, fail->name, fail->detail) : result.failure;
+    if (result.filled) {
+      std::cerr << "loom: internal error: the constructive fill's mesh is not valid: " << why
+                << "; nothing written; please report it with the input\n";
+      return 1;
+    }
+    if (!result.weave.closed) {
+      std::cerr << "loom: weave did not close" << (result.attempts > 1 ? fmt::format(" in {} attempts", result.attempts) : "")
+                << ": " << result.weave.left
+                << (result.fill_failure.empty() ? "; try another --strategy or add rules"
+                                                : "; nor can the constructive fill mesh it: " + result.fill_failure)
+                << "\n";
+      if (o.partial) write_partial(o.output, result.stc);
+      return 1;
+    }
+    std::cerr << "loom: weave closed but the result is not a valid hex mesh: " << why << "; nothing written\n";
     return 1;
   }
   loom::write_hex_mesh(o.output, *result.mesh);
@@ -183,9 +198,15 @@ int run(const Options& o) {
   std::string layer = result.boundary_layer.hexes_added == 0
                           ? std::string()
                           : fmt::format(", boundary layer pillowed (+{} hexes)", result.boundary_layer.hexes_added);
-  std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}{}; min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
-                           result.mesh->hexes.size(), result.mesh->hexes.size() == 1 ? "" : "es", result.weave.steps,
-                           counts, attempt, layer, q.min_scaled_jacobian, q.mean_scaled_jacobian, o.output);
+  if (result.filled)
+    std::cout << fmt::format("filled: {} hexes by the constructive fill, as no weave gave a valid mesh in {} attempt{}; "
+                             "min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
+                             result.mesh->hexes.size(), result.attempts, result.attempts == 1 ? "" : "s",
+                             q.min_scaled_jacobian, q.mean_scaled_jacobian, o.output);
+  else
+    std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}{}; min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
+                             result.mesh->hexes.size(), result.mesh->hexes.size() == 1 ? "" : "es", result.weave.steps,
+                             counts, attempt, layer, q.min_scaled_jacobian, q.mean_scaled_jacobian, o.output);
   if (q.below_zero > 0) {
     std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}); the mesh is written "
                              "for its connectivity\n", q.below_zero, q.min_scaled_jacobian);
@@ -211,6 +232,7 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
   app.add_option("--trace", o->trace, "write one line per rule application to this file");
   app.add_option("--report", o->report, "write a JSON report to this file");
   app.add_flag("--partial", o->partial, "when the weave does not close, write the hexes woven so far and the STC (DOT/SVG) for inspection");
+  app.add_flag("--no-fill", o->no_fill, "when no weave gives a valid mesh, stop (status 1) instead of filling the surface constructively");
   app.add_flag("-q,--quiet", o->quiet, "no progress line");
   app.add_flag("--weld", o->weld, "merge coincident surface nodes instead of rejecting them");
   return std::function<int()>([o] {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <span>
 #include <stdexcept>
 
 #include "src/check/hex_topology.hpp"
@@ -21,16 +22,22 @@ Quad sorted(Quad q) {
 }  // namespace
 
 BoundaryLayerReport pillow_boundary_layer(HexMesh& mesh, std::vector<bool>& fixed) {
+  return pillow_region(mesh, 0, mesh.hexes.size(), fixed);
+}
+
+BoundaryLayerReport pillow_region(HexMesh& mesh, std::size_t first, std::size_t last, std::vector<bool>& fixed) {
   if (fixed.size() != mesh.points.size())
-    throw std::invalid_argument("pillow_boundary_layer: fixed flags and nodes differ in number");
+    throw std::invalid_argument("pillow_region: fixed flags and nodes differ in number");
+  if (first > last || last > mesh.hexes.size()) throw std::invalid_argument("pillow_region: hexes out of range");
+  const auto region = std::span(mesh.hexes).subspan(first, last - first);
   std::map<Quad, int> uses;
-  for (const Hex& h : mesh.hexes)
+  for (const Hex& h : region)
     for (const auto& f : kHexFaceCorners) ++uses[sorted({h[f[0]], h[f[1]], h[f[2]], h[f[3]]})];
 
   std::vector<Quad> boundary;
   // Each boundary quad turned to face into its hex: the new hex's bottom,
   // with its top (the copies) on that side.
-  for (const Hex& h : mesh.hexes)
+  for (const Hex& h : region)
     for (const auto& f : kHexFaceCorners) {
       const Quad q{h[f[3]], h[f[2]], h[f[1]], h[f[0]]};
       if (uses[sorted(q)] == 1) boundary.push_back(q);
@@ -47,7 +54,7 @@ BoundaryLayerReport pillow_boundary_layer(HexMesh& mesh, std::vector<bool>& fixe
         fixed.push_back(false);
         ++report.nodes_added;
       }
-  for (Hex& h : mesh.hexes)
+  for (Hex& h : std::span(mesh.hexes).subspan(first, last - first))
     for (std::uint32_t& v : h)
       if (copy[v] != kNone) v = copy[v];
   for (const Quad& q : boundary)

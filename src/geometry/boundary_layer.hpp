@@ -24,4 +24,11 @@ struct BoundaryLayerReport {
 /// (criteria 1-6): each boundary node must have a single copy.
 BoundaryLayerReport pillow_boundary_layer(HexMesh& mesh, std::vector<bool>& fixed);
 
+/// The same for the region of hexes [first, last): a new hex on every quad of
+/// the region's boundary (a face no other hex of the region has), the region's
+/// hexes moved onto the copies, every other hex left as it is. The new hexes
+/// are appended. Afterwards each hex of the region meets the rest of the mesh
+/// in one face, edge or node of the region's boundary, or not at all.
+BoundaryLayerReport pillow_region(HexMesh& mesh, std::size_t first, std::size_t last, std::vector<bool>& fixed);
+
 }  // namespace loom::geometry

@@ -3,7 +3,9 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "src/fill/fill.hpp"
 #include "src/geometry/boundary_layer.hpp"
+#include "src/util/error.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
 
@@ -70,6 +72,21 @@ void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine
   }
 }
 
+/// The constructive fill in place of a weave, its nodes placed like a weave's.
+void fill_instead(MeshingResult& r, const QuadSurface& surface, const std::vector<fill::Cap>& caps) {
+  try {
+    fill::FilledMesh f = fill::fill_constructively(surface, caps);
+    r.boundary_layer = {};
+    r.failure.clear();
+    r.smoothing = smooth_interior(f.mesh, f.on_boundary);
+    r.check = check_hex_mesh(f.mesh, &surface);
+    r.mesh = std::move(f.mesh);
+    r.filled = true;
+  } catch (const InputError& e) {
+    r.fill_failure = e.what();
+  }
+}
+
 }  // namespace
 
 MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const WeaveOptions& options) {
@@ -85,6 +102,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     attempt.strategy.seed = first_seed + r.attempts;
     if (options.before_attempt) options.before_attempt(r.attempts + 1, attempt.strategy, r.weave);
   }
+  if (!r.combinatorially_valid() && options.fill_caps) fill_instead(r, surface, *options.fill_caps);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

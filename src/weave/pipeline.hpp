@@ -25,6 +25,10 @@ struct MeshingResult {
   /// not needed): done when placement leaves hexes <= 0, kept when it helps.
   geometry::BoundaryLayerReport boundary_layer;
   std::string failure;                   ///< why there is no mesh, when the weave closed
+  /// The mesh is the constructive fill's (WeaveOptions::fill_caps): no weave
+  /// gave one. `weave` and `stc` still describe the last attempt.
+  bool filled = false;
+  std::string fill_failure;              ///< why the fill could not run, when it was asked for
   double seconds = 0;                    ///< of all attempts
   std::size_t attempts = 1;              ///< weaves run (see WeaveOptions::attempts)
   engine::Strategy strategy;             ///< of the last attempt, the one reported

@@ -11,6 +11,7 @@
 #include "engine/engine.hpp"
 #include "engine/rule.hpp"
 #include "engine/strategy.hpp"
+#include "src/fill/cap.hpp"
 #include "src/stc/stc.hpp"
 
 namespace loom::weave {
@@ -32,6 +33,10 @@ struct WeaveOptions {
   /// (after the strategy's own seed when it is random), up to this many
   /// weaves in all. Deterministic: the same attempts run in the same order.
   std::size_t attempts = 1;
+  /// mesh_surface: when no attempt gives a mesh passing criteria 1-6, fill
+  /// the surface constructively with these caps (src/fill/fill.hpp) instead
+  /// of giving up. Null: do not.
+  const std::vector<fill::Cap>* fill_caps = nullptr;
   /// Called before each attempt but the first (a trace starts again), with
   /// the weave of the attempt before it.
   std::function<void(std::size_t attempt, const engine::Strategy&, const WeaveResult& previous)> before_attempt;

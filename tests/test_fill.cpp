@@ -1,0 +1,128 @@
+// The constructive fill (src/fill): its plan, the caps it reads, the meshes it
+// builds (criteria 1-6 on every surface tried), and `loom weave` using it when
+// no weave closes.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <map>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "src/check/validity.hpp"
+#include "src/fill/fill.hpp"
+#include "src/fill/fill_plan.hpp"
+#include "src/gen/generators.hpp"
+#include "src/geometry/boundary_layer.hpp"
+#include "src/io/hex_io.hpp"
+#include "src/util/error.hpp"
+#include "src/weave/weave.hpp"
+#include "tests/support.hpp"
+
+using namespace loom;
+
+namespace {
+
+const std::vector<fill::Cap>& shipped_caps() {
+  static const auto caps = fill::load_caps(fill::default_caps_dir());
+  return caps;
+}
+
+void write(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+}  // namespace
+
+TEST_CASE("fill plan: a proper two-colouring, a perfect matching, diagonals on distinct node pairs") {
+  for (int f : {6, 12, 30, 80})
+    for (std::uint64_t seed : {1, 2, 3}) {
+      CAPTURE(f);
+      CAPTURE(seed);
+      QuadSurface s = gen::randquad(f, seed);
+      fill::FillPlan plan = fill::plan_fill(s);
+      for (const auto& [u, v] : plan.edge_nodes) CHECK(plan.white[u] != plan.white[v]);
+      std::set<std::pair<std::uint32_t, std::uint32_t>> diagonals;
+      for (std::uint32_t q = 0; q < s.quads.size(); ++q) {
+        int even = 0;
+        for (std::uint32_t e : plan.quad_edges[q]) even += plan.even_edge[e];
+        CHECK(even == 1);
+        CHECK(plan.mate[plan.mate[q]] == q);
+        CHECK(plan.mate[q] != q);
+        int k = (plan.white[s.quads[q][0]] == !plan.black_diagonal[q]) ? 0 : 1;
+        std::uint32_t u = s.quads[q][k], v = s.quads[q][k + 2];
+        CHECK(plan.white[u] == !plan.black_diagonal[q]);
+        CHECK(diagonals.insert({std::min(u, v), std::max(u, v)}).second);
+      }
+    }
+}
+
+TEST_CASE("fill: criteria 1-6 hold on block shapes, spheres and random quadrangulations") {
+  std::vector<std::pair<std::string, QuadSurface>> cases = {
+      {"box 2 2 2", gen::box(2, 2, 2)}, {"lshape 2", gen::lshape(2)}, {"tet4", gen::tet4()},
+      {"cubesphere 3", gen::cubesphere(3)}, {"schneiders", gen::schneiders()}};
+  for (int f = 6; f <= 40; f += 2) cases.push_back({fmt::format("randquad {}", f), gen::randquad(f, std::uint64_t(f))});
+  for (const auto& [name, surface] : cases) {
+    CAPTURE(name);
+    fill::FilledMesh m = fill::fill_constructively(surface, shipped_caps());
+    ValidityReport check = check_hex_mesh(m.mesh, &surface);
+    const CriterionResult* failed = check.first_failure();
+    CHECK_MESSAGE(check.combinatorial_valid(), (failed ? failed->detail : std::string()));
+    CHECK(m.core_hexes == 8 * surface.quads.size());  // two tets a quad, four hexes a tet
+    CHECK(m.cap_hexes + m.core_hexes == m.mesh.hexes.size());
+    for (std::size_t v = 0; v < m.on_boundary.size(); ++v) CHECK(m.on_boundary[v] == (v < surface.points.size()));
+  }
+}
+
+TEST_CASE("fill: what it cannot fill is an input error that says why") {
+  QuadSurface odd = gen::odd7();
+  CHECK_THROWS_WITH_AS(fill::fill_constructively(odd, shipped_caps()), doctest::Contains("even"), InputError);
+  QuadSurface torus = gen::torus(4, 4);
+  CHECK_THROWS_WITH_AS(fill::fill_constructively(torus, shipped_caps()), doctest::Contains("Euler characteristic 0"),
+                       InputError);
+}
+
+TEST_CASE("caps: a malformed line names its file and line; a missing cap is reported") {
+  loom::test::ScratchDir dir("caps");
+  for (const auto& e : std::filesystem::directory_iterator(fill::default_caps_dir()))
+    std::filesystem::copy_file(e.path(), dir / e.path().filename());
+  CHECK(fill::load_caps(dir.path()).size() == shipped_caps().size());
+  write(dir / "cap_even0_bd.cap", "even ab\ndiagonal bd\nhex a_t b_t c_t d_t a_b b_b c_b x_q\n");
+  CHECK_THROWS_WITH_AS(fill::load_caps(dir.path()), doctest::Contains("cap_even0_bd.cap:3: 'x_q' is not a cap node"),
+                       InputError);
+  std::filesystem::remove(dir / "cap_even0_bd.cap");
+  CHECK_THROWS_WITH_AS(fill::load_caps(dir.path()), doctest::Contains("no cap with even wall ab and diagonal bd"),
+                       InputError);
+}
+
+TEST_CASE("pillow_region: one hex on each quad of the region's boundary, the rest of the mesh untouched") {
+  HexMesh grid = gen::hexgrid(3, 1, 1);  // hexes 0 1 2 in a row
+  std::vector<bool> fixed(grid.points.size(), false);
+  const Hex last = grid.hexes[2];
+  auto report = geometry::pillow_region(grid, 0, 2, fixed);
+  CHECK(report.hexes_added == 10);  // the two-hex block's boundary
+  CHECK(grid.hexes.size() == 13);
+  CHECK(grid.hexes[2] == last);
+  CHECK(check_hex_mesh(grid).combinatorial_valid());
+}
+
+TEST_CASE("loom weave fills what no weave closes, and --no-fill stops instead") {
+  loom::test::ScratchDir dir("fillcli");
+  std::filesystem::create_directory(dir / "rules");
+  std::filesystem::copy_file(weave::default_rules_dir() / "cross.rule", dir / "rules" / "cross.rule");
+  REQUIRE(loom::test::run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
+  std::string args = "weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --attempts 2 --rules " +
+                     (dir / "rules").string() + " --report " + (dir / "r.json").string();
+  auto r = loom::test::run_cli(args);
+  CHECK((r.status == 0 || r.status == 3));
+  CHECK(r.out.rfind("filled: ", 0) == 0);
+  auto j = nlohmann::json::parse(std::ifstream(dir / "r.json"));
+  CHECK(j["filled"] == true);
+  CHECK(j["closed"] == false);
+  CHECK(j["combinatorially_valid"] == true);
+  CHECK(j["mesh_hexes"].get<std::size_t>() > 8 * 24);  // at least the core's
+  auto check = loom::test::run_cli("check " + (dir / "out.vtk").string() + " --boundary " + (dir / "box.obj").string());
+  CHECK((check.status == 0 || check.out.find("criterion 7") != std::string::npos));  // only the geometry may fail
+  std::filesystem::remove(dir / "out.vtk");
+  r = loom::test::run_cli(args + " --no-fill");
+  CHECK(r.status == 1);
+  CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
+}
