@@ -118,28 +118,43 @@ std::vector<Input> corpus(int randquad_max, const std::string& dir) {
 
 // ---------------------------------------------------------------- one run
 
-/// Where the weave gave no mesh passing criteria 1-6: the constructive fill,
-/// checked independently (criteria 1-6; its nodes are not placed here).
-void fill_row(Row& r, const QuadSurface& surface, const std::vector<fill::Cap>& caps) {
+/// The constructive fill of one input, checked independently (criteria 1-6;
+/// its nodes are not placed here). It does not depend on the configuration:
+/// computed once an input, for the rows whose weave gave no valid mesh.
+struct FillOutcome {
+  bool valid = false;
+  std::size_t hexes = 0;
+  double seconds = 0;
+  std::string failure;  ///< the criterion it fails, or why it could not run
+};
+
+FillOutcome fill_once(const QuadSurface& surface, const std::vector<fill::Cap>& caps) {
+  FillOutcome out;
   auto start = std::chrono::steady_clock::now();
   try {
     fill::FilledMesh f = fill::fill_constructively(surface, caps);
     ValidityReport check = check_hex_mesh(f.mesh, &surface);
-    r.filled = check.combinatorial_valid();
-    r.fill_hexes = f.mesh.hexes.size();
-    if (!r.filled) {
-      const CriterionResult* c = check.first_failure();
-      r.recheck = fmt::format("MISMATCH: the fill fails criterion {}", c ? c->number : 0);
-    }
+    out.valid = check.combinatorial_valid();
+    out.hexes = f.mesh.hexes.size();
+    if (const CriterionResult* c = check.first_failure(); c && !out.valid)
+      out.failure = fmt::format("the fill fails criterion {}", c->number);
   } catch (const InputError& e) {
-    r.note += fmt::format("; fill: {}", e.what());
+    out.failure = e.what();
   }
-  r.fill_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+void record_fill(Row& r, const FillOutcome& f) {
+  r.filled = f.valid;
+  r.fill_hexes = f.hexes;
+  r.fill_seconds = f.seconds;
+  if (f.hexes && !f.valid) r.recheck = "MISMATCH: " + f.failure;  // the fill must always give a valid mesh
+  else if (!f.failure.empty()) r.note += "; fill: " + f.failure;
 }
 
 Row run_one(const Input& input, const QuadSurface& surface, const Config& config,
-            const std::vector<engine::Rule>& rules, const std::vector<fill::Cap>& caps, std::size_t max_steps,
-            double timeout) {
+            const std::vector<engine::Rule>& rules, std::size_t max_steps, double timeout) {
   Row r;
   r.input = input.name;
   r.family = input.family;
@@ -240,7 +255,6 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
   } catch (const std::exception& e) {
     r.note = std::string("error: ") + e.what();
   }
-  if (!r.comb_valid) fill_row(r, surface, caps);
   return r;
 }
 
@@ -326,6 +340,7 @@ int run(const Options& o) {
       if (selected(i, c)) mine.push_back(c);
     if (mine.empty()) continue;
     std::optional<QuadSurface> surface;
+    std::optional<FillOutcome> filled;
     std::string error;
     try {
       surface = inputs[i].make();
@@ -334,9 +349,16 @@ int run(const Options& o) {
     }
     for (std::size_t c : mine) {
       Row r;
-      if (surface) r = run_one(inputs[i], *surface, cfgs[c], rules, caps, o.max_steps, o.timeout);
-      else r.input = inputs[i].name, r.family = inputs[i].family, r.faces = inputs[i].faces, r.config = cfgs[c].name,
-           r.note = error;
+      if (surface) {
+        r = run_one(inputs[i], *surface, cfgs[c], rules, o.max_steps, o.timeout);
+        if (!r.comb_valid) {
+          if (!filled) filled = fill_once(*surface, caps);
+          record_fill(r, *filled);
+        }
+      } else {
+        r.input = inputs[i].name, r.family = inputs[i].family, r.faces = inputs[i].faces, r.config = cfgs[c].name;
+        r.note = error;
+      }
       r.row = i * cfgs.size() + c;
       std::cerr << fmt::format("[{}] {} / {}: {}{} {} hexes, {:.3f} s{}\n", r.row, r.input, r.config,
                                r.closed ? "closed" : "open", r.valid ? " valid" : r.comb_valid ? " comb-valid" : "",

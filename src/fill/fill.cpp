@@ -90,7 +90,6 @@ class Builder {
   std::uint32_t cone_centroid(std::uint32_t& slot, std::uint32_t u, std::uint32_t v) {
     return once(slot, (at(u) + at(v) + at(apex())) * (1.0 / 3));
   }
-  friend class TetSplit;
 };
 
 /// The two tets of quad q (a triangle and the apex), each split into four
@@ -154,7 +153,8 @@ void add_cap(Builder& b, std::uint32_t q, const std::vector<Cap>& caps) {
   auto corner = [&](std::uint32_t k) { return quad[(r + k) % 4]; };
   auto edge = [&](std::uint32_t k) { return b.edge_of(q, r + static_cast<int>(k)); };
   std::uint32_t even = 0;
-  while (!b.plan_.even_edge[edge(even)]) ++even;
+  while (even < 4 && !b.plan_.even_edge[edge(even)]) ++even;
+  if (even == 4) throw std::logic_error("plan_fill gives every quad one even edge");
   const Cap& cap = cap_for(caps, even, b.plan_.black_diagonal[q]);
   std::vector<std::uint32_t> inside(cap.inside.size(), none);
   auto cap_point = [&](const Vec3& p) {  // cap coordinates: top square at z = 1, inner square inset by 1/4 at z = 0

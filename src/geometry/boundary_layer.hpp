@@ -27,8 +27,10 @@ BoundaryLayerReport pillow_boundary_layer(HexMesh& mesh, std::vector<bool>& fixe
 /// The same for the region of hexes [first, last): a new hex on every quad of
 /// the region's boundary (a face no other hex of the region has), the region's
 /// hexes moved onto the copies, every other hex left as it is. The new hexes
-/// are appended. Afterwards each hex of the region meets the rest of the mesh
-/// in one face, edge or node of the region's boundary, or not at all.
+/// are appended. Afterwards no hex of the region has a node on its boundary,
+/// and each new hex meets the boundary in exactly its quad: the region with
+/// its pillow meets the rest of the mesh in single faces, edges or nodes of
+/// the boundary, whatever the region's hexes did there before.
 BoundaryLayerReport pillow_region(HexMesh& mesh, std::size_t first, std::size_t last, std::vector<bool>& fixed);
 
 }  // namespace loom::geometry
