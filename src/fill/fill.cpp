@@ -20,16 +20,17 @@ double orientation(const std::array<Vec3, 8>& p) {
   return dot(a, cross(b, c));
 }
 
-/// Nodes of the fill, made on first use so that every entity (an edge's
-/// midpoint, a quad's diagonal) has one node whichever cap or tet asks.
+/// The mesh being filled. Its nodes are made on first use, so that every
+/// entity (an edge's midpoint, a quad's diagonal) has one node whichever cap
+/// or tet asks for it.
 class Builder {
  public:
-  Builder(const QuadSurface& s, const FillPlan& plan) : s_(s), plan_(plan) {
-    out_.mesh.points = s.points;
-    out_.on_boundary.assign(s.points.size(), true);
+  Builder(const QuadSurface& s, const FillPlan& p) : surface(s), plan(p) {
+    out.mesh.points = s.points;
+    out.on_boundary.assign(s.points.size(), true);
     for (const auto& p : s.points) centre_ = centre_ + p;
     centre_ = centre_ * (1.0 / static_cast<double>(s.points.size()));
-    const std::size_t n = s.points.size(), e = plan.edge_nodes.size(), q = s.quads.size();
+    const std::size_t n = s.points.size(), e = p.edge_nodes.size(), q = s.quads.size();
     inner_.assign(n, none), white_mid_.assign(n, none), spoke_mid_.assign(n, none);
     edge_mid_.assign(e, none), wall_centre_.assign(e, none), edge_cone_.assign(e, none);
     diagonal_mid_.assign(q, none), diagonal_cone_.assign(q, none);
@@ -37,30 +38,30 @@ class Builder {
   }
 
   std::uint32_t add(const Vec3& p) {
-    out_.mesh.points.push_back(p);
-    out_.on_boundary.push_back(false);
-    return static_cast<std::uint32_t>(out_.mesh.points.size() - 1);
+    out.mesh.points.push_back(p);
+    out.on_boundary.push_back(false);
+    return static_cast<std::uint32_t>(out.mesh.points.size() - 1);
   }
-  const Vec3& at(std::uint32_t node) const { return out_.mesh.points[node]; }
+  const Vec3& at(std::uint32_t node) const { return out.mesh.points[node]; }
   std::uint32_t once(std::uint32_t& slot, const Vec3& p) { return slot == none ? slot = add(p) : slot; }
 
-  std::uint32_t inner(std::uint32_t v) { return once(inner_[v], lerp(centre_, s_.points[v], 0.5)); }
-  std::uint32_t white_mid(std::uint32_t v) { return once(white_mid_[v], lerp(centre_, s_.points[v], 0.75)); }
-  std::uint32_t apex() { return once(apex_, centre_); }
-  std::uint32_t spoke_mid(std::uint32_t v) { return once(spoke_mid_[v], lerp(centre_, s_.points[v], 0.25)); }
+  std::uint32_t inner(std::uint32_t v) { return once(inner_[v], lerp(centre_, surface.points[v], 0.5)); }
+  std::uint32_t white_mid(std::uint32_t v) { return once(white_mid_[v], lerp(centre_, surface.points[v], 0.75)); }
+  std::uint32_t centre() { return once(centre_node_, centre_); }
+  std::uint32_t spoke_mid(std::uint32_t v) { return once(spoke_mid_[v], lerp(centre_, surface.points[v], 0.25)); }
   std::uint32_t edge_mid(std::uint32_t e) {
-    auto [u, v] = plan_.edge_nodes[e];
+    auto [u, v] = plan.edge_nodes[e];
     return once(edge_mid_[e], lerp(at(inner(u)), at(inner(v)), 0.5));
   }
   std::uint32_t wall_centre(std::uint32_t e, const Vec3& p) { return once(wall_centre_[e], p); }
 
   // The inner triangulation's entities of quad q: its diagonal, and its
   // triangle t (0, 1) with corners (corner before apex, apex, corner after).
-  std::uint32_t quad_corner(std::uint32_t q, int k) const { return s_.quads[q][(k % 4 + 4) % 4]; }
+  std::uint32_t quad_corner(std::uint32_t q, int k) const { return surface.quads[q][(k % 4 + 4) % 4]; }
   int first_apex(std::uint32_t q) const {
     // A triangle's apex is a corner off the diagonal.
-    bool corner0_black = !plan_.white[s_.quads[q][0]];
-    return plan_.black_diagonal[q] == corner0_black ? 1 : 0;
+    bool corner0_black = !plan.white[surface.quads[q][0]];
+    return plan.black_diagonal[q] == corner0_black ? 1 : 0;
   }
   std::uint32_t diagonal_mid(std::uint32_t q) {
     int a = first_apex(q);
@@ -72,35 +73,35 @@ class Builder {
     return once(triangle_centroid_[2 * q + t], c);
   }
 
-  void add_hex(const std::array<std::uint32_t, 8>& h) { out_.mesh.hexes.push_back(h); }
+  void add_hex(const std::array<std::uint32_t, 8>& h) { out.mesh.hexes.push_back(h); }
 
   void add_core(std::uint32_t q);
-  std::uint32_t edge_of(std::uint32_t q, int k) const { return plan_.quad_edges[q][(k % 4 + 4) % 4]; }
+  std::uint32_t edge_of(std::uint32_t q, int k) const { return plan.quad_edges[q][(k % 4 + 4) % 4]; }
 
-  FilledMesh out_;
-  const QuadSurface& s_;
-  const FillPlan& plan_;
-  Vec3 centre_{};
+  FilledMesh out;
+  const QuadSurface& surface;
+  const FillPlan& plan;
 
  private:
-  std::uint32_t apex_ = none;
+  Vec3 centre_{};
+  std::uint32_t centre_node_ = none;
   std::vector<std::uint32_t> inner_, white_mid_, spoke_mid_, edge_mid_, wall_centre_, edge_cone_;
   std::vector<std::uint32_t> diagonal_mid_, diagonal_cone_, triangle_centroid_, tet_centroid_;
 
   std::uint32_t cone_centroid(std::uint32_t& slot, std::uint32_t u, std::uint32_t v) {
-    return once(slot, (at(u) + at(v) + at(apex())) * (1.0 / 3));
+    return once(slot, (at(u) + at(v) + at(centre())) * (1.0 / 3));
   }
 };
 
-/// The two tets of quad q (a triangle and the apex), each split into four
+/// The two tets of quad q (a triangle and the centre), each split into four
 /// hexes, one at each corner: the corner, the midpoints of its three edges,
 /// the centroids of its three faces and the tet's centroid.
 void Builder::add_core(std::uint32_t q) {
   for (int t = 0; t < 2; ++t) {
     int a = first_apex(q) + 2 * t;
-    // Tet vertices 0 1 2 (the triangle, counter-clockwise from outside) and 3 (the apex).
+    // Tet vertices 0 1 2 (the triangle, counter-clockwise from outside) and 3 (the centre).
     std::array<std::uint32_t, 3> surface_node = {quad_corner(q, a - 1), quad_corner(q, a), quad_corner(q, a + 1)};
-    std::array<std::uint32_t, 4> vertex = {inner(surface_node[0]), inner(surface_node[1]), inner(surface_node[2]), apex()};
+    std::array<std::uint32_t, 4> vertex = {inner(surface_node[0]), inner(surface_node[1]), inner(surface_node[2]), centre()};
     // Triangle edges: 0-1 and 1-2 are surface edges, 2-0 the diagonal.
     auto triangle_edge_mid = [&](int i, int j) {
       if ((i == 2 && j == 0) || (i == 0 && j == 2)) return diagonal_mid(q);
@@ -135,7 +136,7 @@ void Builder::add_core(std::uint32_t q) {
                                (ref[p] + ref[y] + ref[z]) * (1.0 / 3)};
       if (orientation(r) < 0) h = {h[0], h[3], h[2], h[1], h[4], h[7], h[6], h[5]};
       add_hex(h);
-      ++out_.core_hexes;
+      ++out.core_hexes;
     }
   }
 }
@@ -148,14 +149,14 @@ const Cap& cap_for(const std::vector<Cap>& caps, std::uint32_t even, bool black_
 
 /// The cap of quad q, its corner a at the quad's first black corner.
 void add_cap(Builder& b, std::uint32_t q, const std::vector<Cap>& caps) {
-  const auto& quad = b.s_.quads[q];
-  int r = b.plan_.white[quad[0]] ? 1 : 0;
+  const auto& quad = b.surface.quads[q];
+  int r = b.plan.white[quad[0]] ? 1 : 0;
   auto corner = [&](std::uint32_t k) { return quad[(r + k) % 4]; };
   auto edge = [&](std::uint32_t k) { return b.edge_of(q, r + static_cast<int>(k)); };
   std::uint32_t even = 0;
-  while (even < 4 && !b.plan_.even_edge[edge(even)]) ++even;
+  while (even < 4 && !b.plan.even_edge[edge(even)]) ++even;
   if (even == 4) throw std::logic_error("plan_fill gives every quad one even edge");
-  const Cap& cap = cap_for(caps, even, b.plan_.black_diagonal[q]);
+  const Cap& cap = cap_for(caps, even, b.plan.black_diagonal[q]);
   std::vector<std::uint32_t> inside(cap.inside.size(), none);
   auto cap_point = [&](const Vec3& p) {  // cap coordinates: top square at z = 1, inner square inset by 1/4 at z = 0
     double inset = 0.25 * (1 - p[2]), span = 1 - 2 * inset;
@@ -163,7 +164,7 @@ void add_cap(Builder& b, std::uint32_t q, const std::vector<Cap>& caps) {
     auto bilinear = [&](auto node) {
       return (node(0) * ((1 - u) * (1 - v)) + node(1) * (u * (1 - v)) + node(2) * (u * v) + node(3) * ((1 - u) * v));
     };
-    Vec3 top = bilinear([&](int k) { return b.s_.points[corner(k)]; });
+    Vec3 top = bilinear([&](int k) { return b.surface.points[corner(k)]; });
     Vec3 bottom = bilinear([&](int k) { return b.at(b.inner(corner(k))); });
     return lerp(bottom, top, p[2]);
   };
@@ -175,7 +176,7 @@ void add_cap(Builder& b, std::uint32_t q, const std::vector<Cap>& caps) {
       case K::white_mid: return b.white_mid(corner(role.index));
       case K::edge_mid: return b.edge_mid(edge(role.index));
       case K::wall_centre: {
-        Vec3 c = (b.s_.points[corner(role.index)] + b.s_.points[corner(role.index + 1)] +
+        Vec3 c = (b.surface.points[corner(role.index)] + b.surface.points[corner(role.index + 1)] +
                   b.at(b.inner(corner(role.index))) + b.at(b.inner(corner(role.index + 1)))) * 0.25;
         return b.wall_centre(edge(role.index), c);
       }
@@ -204,7 +205,7 @@ void add_cap(Builder& b, std::uint32_t q, const std::vector<Cap>& caps) {
 FilledMesh fill_constructively(const QuadSurface& surface, const std::vector<Cap>& caps) {
   const FillPlan plan = plan_fill(surface);
   Builder b(surface, plan);
-  auto& hexes = b.out_.mesh.hexes;
+  auto& hexes = b.out.mesh.hexes;
   // Each cap is pillowed, so that the caps of a pair meet cleanly across their
   // even wall; each pair is pillowed, so that pairs meet cleanly across odd walls
   // (two even walls can share three nodes of a white corner's vertical edge).
@@ -214,13 +215,13 @@ FilledMesh fill_constructively(const QuadSurface& surface, const std::vector<Cap
     for (std::uint32_t quad : {q, plan.mate[q]}) {
       const std::size_t cap_start = hexes.size();
       add_cap(b, quad, caps);
-      geometry::pillow_region(b.out_.mesh, cap_start, hexes.size(), b.out_.on_boundary);
+      geometry::pillow_region(b.out.mesh, cap_start, hexes.size(), b.out.on_boundary);
     }
-    geometry::pillow_region(b.out_.mesh, pair_start, hexes.size(), b.out_.on_boundary);
+    geometry::pillow_region(b.out.mesh, pair_start, hexes.size(), b.out.on_boundary);
   }
-  b.out_.cap_hexes = hexes.size();
+  b.out.cap_hexes = hexes.size();
   for (std::uint32_t q = 0; q < surface.quads.size(); ++q) b.add_core(q);
-  return std::move(b.out_);
+  return std::move(b.out);
 }
 
 }  // namespace loom::fill
