@@ -122,6 +122,9 @@ TEST_CASE("loom weave fills what no weave closes, and --no-fill stops instead") 
   auto check = loom::test::run_cli("check " + (dir / "out.vtk").string() + " --boundary " + (dir / "box.obj").string());
   CHECK((check.status == 0 || check.out.find("criterion 7") != std::string::npos));  // only the geometry may fail
   std::filesystem::remove(dir / "out.vtk");
+  CHECK(loom::test::run_cli(args + " --partial").status == r.status);  // the weave's state, beside the filled mesh
+  CHECK(std::filesystem::exists(dir / "out.partial.vtk"));
+  std::filesystem::remove(dir / "out.vtk");
   r = loom::test::run_cli(args + " --no-fill");
   CHECK(r.status == 1);
   CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));

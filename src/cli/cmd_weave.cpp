@@ -167,6 +167,8 @@ int run(const Options& o) {
   if (!o.report.empty())
     loom::write_text_atomically(o.report, report_json(o, result, result.strategy).dump(2) + "\n");
   if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir);
+  // The weave's partial state, also when the fill then meshed the surface.
+  if (o.partial && !result.weave.closed) write_partial(o.output, result.stc);
 
   if (!result.combinatorially_valid()) {
     const auto* fail = result.check ? result.check->first_failure() : nullptr;
@@ -182,7 +184,6 @@ int run(const Options& o) {
                 << (result.fill_failure.empty() ? "; try another --strategy or add rules"
                                                 : "; nor can the constructive fill mesh it: " + result.fill_failure)
                 << "\n";
-      if (o.partial) write_partial(o.output, result.stc);
       return 1;
     }
     std::cerr << "loom: weave closed but the result is not a valid hex mesh: " << why << "; nothing written\n";
