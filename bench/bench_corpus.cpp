@@ -140,6 +140,8 @@ FillOutcome fill_once(const QuadSurface& surface, const std::vector<fill::Cap>& 
       out.failure = fmt::format("the fill fails criterion {}", c->number);
   } catch (const InputError& e) {
     out.failure = e.what();
+  } catch (const std::exception& e) {  // a bug in the fill: the row says so, the corpus goes on
+    out.failure = std::string("error: ") + e.what();
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
@@ -149,8 +151,10 @@ void record_fill(Row& r, const FillOutcome& f) {
   r.filled = f.valid;
   r.fill_hexes = f.hexes;
   r.fill_seconds = f.seconds;
-  if (f.hexes && !f.valid) r.recheck = "MISMATCH: " + f.failure;  // the fill must always give a valid mesh
-  else if (!f.failure.empty()) r.note += "; fill: " + f.failure;
+  if (f.hexes && !f.valid)  // the fill must always give a valid mesh
+    r.recheck = r.recheck.starts_with("MISMATCH") ? r.recheck + "; " + f.failure : "MISMATCH: " + f.failure;
+  else if (!f.failure.empty())
+    r.note += "; fill: " + f.failure;
 }
 
 Row run_one(const Input& input, const QuadSurface& surface, const Config& config,

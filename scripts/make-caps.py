@@ -7,10 +7,11 @@ split by a diagonal into two triangles of three quads each at the bottom; four
 walls, one per edge, each a hexagon (top edge, the black corner's vertical edge,
 the bottom edge's two halves, the white corner's two-segment vertical edge):
 the even wall in two quads (chord from the black top to the white bottom), the
-three odd walls in three quads round a centre. This script writes that boundary
-for the even wall on ab with diagonal bd, and on cd with diagonal ac, weaves
-each with build/loom (random strategies, the first attempt that closes), and
-writes the four caps of each diagonal: the woven one and its images under the
+three odd walls in three quads round a centre. The inner diagonal joins the
+black corners a and c (surface validation refuses two quads sharing a diagonal,
+so any fixed choice is safe). This script writes that boundary for the even
+wall on cd, weaves it with build/loom (random strategies, the first attempt
+that closes), and writes four caps: the woven one and its images under the
 symmetries of the square that keep the colours (a half turn, the two diagonal
 mirrors). Usage: scripts/make-caps.py [WORKDIR]  (run from the source tree)
 """
@@ -123,9 +124,11 @@ def make(diagonal, even, work, out_dir, loom):
     pos, faces = boundary(odd, diagonal)
     stem = os.path.join(work, 'cap_%s' % diagonal)
     write_obj(stem + '.obj', pos, faces)
-    subprocess.run([loom, 'weave', stem + '.obj', '-o', stem + '.vtk', '--attempts', '64', '--no-fill', '-q'],
-                   check=False)
-    points, hexes = read_vtk(stem + '.vtk')  # status 3 is fine: only the connectivity is kept
+    if os.path.exists(stem + '.vtk'): os.remove(stem + '.vtk')
+    status = subprocess.run([loom, 'weave', stem + '.obj', '-o', stem + '.vtk', '--attempts', '64', '--no-fill', '-q']).returncode
+    if status not in (0, 3):  # 3: geometry not achieved, which is fine: only the connectivity is kept
+        sys.exit('make-caps: loom weave gave no cap (status %d)' % status)
+    points, hexes = read_vtk(stem + '.vtk')
     by_position = {tuple(round(x, 6) for x in p): n for n, p in pos.items()}
     names, inside = [], {}
     for p in points:
@@ -143,10 +146,10 @@ def make(diagonal, even, work, out_dir, loom):
         if mirror: mapped = [[h[0], h[3], h[2], h[1], h[4], h[7], h[6], h[5]] for h in mapped]
         _, expected = boundary([i for i in range(4) if EDGES[i] != e], diagonal)
         assert {frozenset(f) for f in boundary_faces(mapped)} == {frozenset(f) for f in expected}, what
-        with open(os.path.join(out_dir, 'cap_even%d_%s.cap' % (EDGES.index(e), diagonal)), 'w') as o:
+        with open(os.path.join(out_dir, 'cap_even_%s.cap' % e), 'w') as o:
             o.write('# Cap over one quad: even wall %s, inner diagonal %s, %d hexes (docs/fill.md).\n' % (e, diagonal, len(mapped)))
             o.write('# Written by scripts/make-caps.py: %s of the cap with even wall %s woven by loom weave.\n' % (what, EDGES[even]))
-            o.write('even %s\ndiagonal %s\n' % (e, diagonal))
+            o.write('even %s\n' % e)
             for n, p in inside.items():
                 x, y = place(p[0], p[1])
                 o.write('node %s %.4f %.4f %.4f\n' % (n, x, y, p[2]))
@@ -156,5 +159,4 @@ def make(diagonal, even, work, out_dir, loom):
 if __name__ == '__main__':
     work = sys.argv[1] if len(sys.argv) > 1 else '/tmp/loom-caps'
     os.makedirs(work, exist_ok=True)
-    for diagonal, even in (('bd', 0), ('ac', 2)):
-        make(diagonal, even, work, 'rules/fill', 'build/loom')
+    make('ac', 2, work, 'rules/fill', 'build/loom')

@@ -35,3 +35,25 @@ TEST_CASE("of two configurations closing as many randquad, the one with more val
   CHECK(text.find("Closes most: **second**") != std::string::npos);
   CHECK(text.find("### What stops second, input by input") != std::string::npos);
 }
+
+TEST_CASE("a row's fill columns survive the CSV, and the summary counts the fill beside the weave") {
+  bench::Row filled = randquad("only", 0, false, false);
+  filled.filled = true, filled.fill_hexes = 1280, filled.fill_seconds = 0.0125;
+  filled.note += "; fill: made up";
+  std::vector<bench::Row> rows = {filled, randquad("only", 1, true, true)};
+  rows[1].row = 1;
+  auto csv = std::filesystem::temp_directory_path() / "loom-test-corpus-table.csv";
+  auto md = std::filesystem::temp_directory_path() / "loom-test-corpus-table-fill.md";
+  bench::write_outputs(rows, csv.string(), md.string(), false);
+  auto back = bench::read_csv(csv.string());
+  std::string text = test::slurp(md);
+  std::filesystem::remove(csv);
+  std::filesystem::remove(md);
+  REQUIRE(back.size() == 2);
+  CHECK(back[0].filled);
+  CHECK(back[0].fill_hexes == 1280);
+  CHECK(back[0].fill_seconds == doctest::Approx(0.0125));
+  CHECK(back[0].note == filled.note);
+  CHECK_FALSE(back[1].filled);
+  CHECK(text.find("2/2 (100.0%) of randquad (1 runs filled, 0 left without a mesh)") != std::string::npos);
+}

@@ -15,6 +15,7 @@
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_parser.hpp"
 #include "src/cli/command.hpp"
+#include "src/fill/cap.hpp"
 #include "src/io/hex_io.hpp"
 #include "src/io/mesh_format.hpp"
 #include "src/io/surface_io.hpp"
@@ -129,11 +130,7 @@ int run(const Options& o) {
   loom::weave::WeaveOptions options;
   options.strategy = parse_strategy(o, rules);
   options.attempts = o.attempts;
-  std::vector<loom::fill::Cap> caps;
-  if (!o.no_fill) {
-    caps = loom::fill::load_caps(loom::fill::default_caps_dir());
-    options.fill_caps = &caps;
-  }
+  if (!o.no_fill) options.fill_caps = loom::fill::default_caps_dir();
 
   std::string trace;
   std::optional<loom::weave::StepDumper> steps;
@@ -186,7 +183,9 @@ int run(const Options& o) {
                 << "\n";
       return 1;
     }
-    std::cerr << "loom: weave closed but the result is not a valid hex mesh: " << why << "; nothing written\n";
+    std::cerr << "loom: weave closed but the result is not a valid hex mesh: " << why
+              << (result.fill_failure.empty() ? "" : "; nor can the constructive fill mesh it: " + result.fill_failure)
+              << "; nothing written\n";
     return 1;
   }
   loom::write_hex_mesh(o.output, *result.mesh);

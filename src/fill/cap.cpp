@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "src/util/error.hpp"
+#include "src/weave/weave.hpp"
 
 namespace loom::fill {
 
@@ -46,7 +47,7 @@ Cap read_cap(const std::filesystem::path& file) {
   Cap cap;
   cap.source = file.string();
   std::map<std::string, std::uint32_t> inside;
-  bool have_even = false, have_diagonal = false;
+  bool have_even = false;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     auto where = [&] { return fmt::format("{}:{}", file.string(), number); };
@@ -62,12 +63,6 @@ Cap read_cap(const std::filesystem::path& file) {
       if (!k) fail_input(where(), fmt::format("'even {}': not an edge of the quad", e), "write ab, bc, cd or da");
       cap.even_edge = *k;
       have_even = true;
-    } else if (keyword == "diagonal") {
-      std::string d;
-      words >> d;
-      if (d != "ac" && d != "bd") fail_input(where(), fmt::format("'diagonal {}'", d), "write ac or bd");
-      cap.black_diagonal = d == "ac";
-      have_diagonal = true;
     } else if (keyword == "node") {
       std::string name;
       Vec3 p;
@@ -87,12 +82,11 @@ Cap read_cap(const std::filesystem::path& file) {
       }
       cap.hexes.push_back(hex);
     } else {
-      fail_input(where(), fmt::format("unknown keyword '{}'", keyword), "lines are even, diagonal, node or hex");
+      fail_input(where(), fmt::format("unknown keyword '{}'", keyword), "lines are even, node or hex");
     }
     if (words >> rest) fail_input(where(), fmt::format("unexpected '{}' at the end of the line", rest), "remove it");
   }
-  if (!have_even || !have_diagonal || cap.hexes.empty())
-    fail_input(file.string(), "a cap needs an 'even' line, a 'diagonal' line and hexes", "see docs/fill.md");
+  if (!have_even || cap.hexes.empty()) fail_input(file.string(), "a cap needs an 'even' line and hexes", "see docs/fill.md");
   return cap;
 }
 
@@ -108,14 +102,12 @@ std::vector<Cap> load_caps(const std::filesystem::path& dir) {
   std::vector<Cap> caps;
   for (const auto& f : files) caps.push_back(read_cap(f));
   for (std::uint32_t even = 0; even < 4; ++even)
-    for (bool black : {false, true})
-      if (std::none_of(caps.begin(), caps.end(),
-                       [&](const Cap& c) { return c.even_edge == even && c.black_diagonal == black; }))
-        fail_input(dir.string(), fmt::format("no cap with even wall {} and diagonal {}", edge_names[even], black ? "ac" : "bd"),
-                   "regenerate them with scripts/make-caps.py");
+    if (std::none_of(caps.begin(), caps.end(), [&](const Cap& c) { return c.even_edge == even; }))
+      fail_input(dir.string(), fmt::format("no cap with even wall {}", edge_names[even]),
+                 "regenerate the caps with scripts/make-caps.py");
   return caps;
 }
 
-std::filesystem::path default_caps_dir() { return std::filesystem::path(LOOM_RULES_DIR) / "fill"; }
+std::filesystem::path default_caps_dir() { return weave::default_rules_dir() / "fill"; }
 
 }  // namespace loom::fill

@@ -7,7 +7,8 @@
 //   b_m, d_m  the midpoints of the white corners' vertical edges
 //   Mab Mbc Mcd Mda  inner midpoints of the quad's edges
 //   Wab ...   centres of the odd walls (every wall but the even one)
-//   Mdiag     midpoint of the inner diagonal; Gd0 Gd1 centroids of its two triangles
+//   Mdiag     midpoint of the inner diagonal a' c'; Gd0 Gd1 centroids of the
+//             triangles at b' and at d'
 //   iN        nodes inside the cap
 // Caps are data (rules/fill/*.cap, written by scripts/make-caps.py), not code.
 #include <array>
@@ -30,18 +31,19 @@ struct CapRole {
 
 struct Cap {
   std::uint32_t even_edge = 0;        ///< the one wall of two quads (0: ab .. 3: da)
-  bool black_diagonal = false;        ///< the inner diagonal joins a and c (else b and d)
-  std::vector<Vec3> inside;           ///< cap coordinates of node iN: top quad at z = 1, inner at z = 0
+  /// Cap coordinates of node iN: the quad is the unit square at z = 1, the
+  /// inner quad the square [1/4, 3/4]^2 at z = 0, the sides straight between.
+  std::vector<Vec3> inside;
   std::vector<std::array<CapRole, 8>> hexes;  ///< VTK node order, positive in cap coordinates
   std::string source;                 ///< file it was read from
 };
 
 /// The caps in `dir` (*.cap, sorted by name). Throws loom::InputError naming
-/// FILE:LINE for a malformed line, and when some (even edge, diagonal) pair
-/// has no cap.
+/// FILE:LINE for a malformed line, and when some even edge has no cap.
 std::vector<Cap> load_caps(const std::filesystem::path& dir);
 
-/// The shipped caps: the rules directory's fill/ (see weave::default_rules_dir).
+/// The caps `loom weave` uses: fill/ in its rules directory
+/// (weave::default_rules_dir: $LOOM_RULES, else the shipped rules/).
 std::filesystem::path default_caps_dir();
 
 }  // namespace loom::fill

@@ -25,12 +25,12 @@ double orientation(const std::array<Vec3, 8>& p) {
 /// or tet asks for it.
 class Builder {
  public:
-  Builder(const QuadSurface& s, const FillPlan& p) : surface(s), plan(p) {
+  Builder(const QuadSurface& s, const FillPlan& fill_plan) : surface(s), plan(fill_plan) {
     out.mesh.points = s.points;
     out.on_boundary.assign(s.points.size(), true);
     for (const auto& p : s.points) centre_ = centre_ + p;
     centre_ = centre_ * (1.0 / static_cast<double>(s.points.size()));
-    const std::size_t n = s.points.size(), e = p.edge_nodes.size(), q = s.quads.size();
+    const std::size_t n = s.points.size(), e = fill_plan.edge_nodes.size(), q = s.quads.size();
     inner_.assign(n, none), white_mid_.assign(n, none), spoke_mid_.assign(n, none);
     edge_mid_.assign(e, none), wall_centre_.assign(e, none), edge_cone_.assign(e, none);
     diagonal_mid_.assign(q, none), diagonal_cone_.assign(q, none);
@@ -59,9 +59,8 @@ class Builder {
   // triangle t (0, 1) with corners (corner before apex, apex, corner after).
   std::uint32_t quad_corner(std::uint32_t q, int k) const { return surface.quads[q][(k % 4 + 4) % 4]; }
   int first_apex(std::uint32_t q) const {
-    // A triangle's apex is a corner off the diagonal.
-    bool corner0_black = !plan.white[surface.quads[q][0]];
-    return plan.black_diagonal[q] == corner0_black ? 1 : 0;
+    // A triangle's apex is a corner off the diagonal, which joins the black corners.
+    return plan.white[surface.quads[q][0]] ? 0 : 1;
   }
   std::uint32_t diagonal_mid(std::uint32_t q) {
     int a = first_apex(q);
@@ -141,10 +140,10 @@ void Builder::add_core(std::uint32_t q) {
   }
 }
 
-const Cap& cap_for(const std::vector<Cap>& caps, std::uint32_t even, bool black_diagonal) {
+const Cap& cap_for(const std::vector<Cap>& caps, std::uint32_t even) {
   for (const auto& c : caps)
-    if (c.even_edge == even && c.black_diagonal == black_diagonal) return c;
-  throw std::logic_error("load_caps guarantees a cap for every even wall and diagonal");
+    if (c.even_edge == even) return c;
+  throw std::logic_error("load_caps guarantees a cap for every even wall");
 }
 
 /// The cap of quad q, its corner a at the quad's first black corner.
@@ -156,7 +155,7 @@ void add_cap(Builder& b, std::uint32_t q, const std::vector<Cap>& caps) {
   std::uint32_t even = 0;
   while (even < 4 && !b.plan.even_edge[edge(even)]) ++even;
   if (even == 4) throw std::logic_error("plan_fill gives every quad one even edge");
-  const Cap& cap = cap_for(caps, even, b.plan.black_diagonal[q]);
+  const Cap& cap = cap_for(caps, even);
   std::vector<std::uint32_t> inside(cap.inside.size(), none);
   auto cap_point = [&](const Vec3& p) {  // cap coordinates: top square at z = 1, inner square inset by 1/4 at z = 0
     double inset = 0.25 * (1 - p[2]), span = 1 - 2 * inset;
@@ -182,8 +181,8 @@ void add_cap(Builder& b, std::uint32_t q, const std::vector<Cap>& caps) {
       }
       case K::diagonal_mid: return b.diagonal_mid(q);
       case K::triangle_centroid: {
-        // The cap names its triangles by apex from corner a; the builder from the quad's first apex.
-        int apex = r + (cap.black_diagonal ? 1 : 0) + 2 * static_cast<int>(role.index);
+        // The cap's triangles have their apexes at b and d; the builder counts from the quad's first apex.
+        int apex = r + 1 + 2 * static_cast<int>(role.index);
         return b.triangle_centroid(q, ((apex - b.first_apex(q)) % 4 + 4) % 4 / 2);
       }
       case K::inside: {

@@ -1,12 +1,12 @@
 #include "src/fill/fill_plan.hpp"
 
+#include <algorithm>
 #include <deque>
 #include <map>
 #include <unordered_map>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/max_cardinality_matching.hpp>
-#include <boost/graph/strong_components.hpp>
 
 #include "src/util/error.hpp"
 
@@ -76,36 +76,6 @@ void match_quads(const QuadSurface& s, FillPlan& plan) {
   }
 }
 
-/// Literal 2q: quad q takes the diagonal of its black corners; 2q+1: of its
-/// white ones. Two quads may not take the same pair of nodes.
-void choose_diagonals(const QuadSurface& s, FillPlan& plan) {
-  const std::size_t n = s.quads.size();
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> takers;  // node pair -> literals
-  for (std::uint32_t q = 0; q < n; ++q)
-    for (int k = 0; k < 2; ++k) {
-      std::uint32_t u = s.quads[q][k], v = s.quads[q][k + 2];
-      takers[{std::min(u, v), std::max(u, v)}].push_back(2 * q + (plan.white[u] ? 1 : 0));
-    }
-  using Implications = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
-  Implications g(2 * n);
-  for (const auto& [pair, literals] : takers)
-    for (std::size_t i = 0; i < literals.size(); ++i)
-      for (std::size_t j = i + 1; j < literals.size(); ++j) {
-        boost::add_edge(literals[i], literals[j] ^ 1, g);
-        boost::add_edge(literals[j], literals[i] ^ 1, g);
-      }
-  std::vector<int> component(2 * n);
-  boost::strong_components(g, component.data());
-  plan.black_diagonal.resize(n);
-  for (std::uint32_t q = 0; q < n; ++q) {
-    if (component[2 * q] == component[2 * q + 1])
-      fail_input(where, fmt::format("quad {} has no diagonal another quad does not also take", q),
-                 "the surface repeats node pairs across quads too often for the fill");
-    // Tarjan numbers components sinks first: take the literal whose component comes later in topological order.
-    plan.black_diagonal[q] = component[2 * q] < component[2 * q + 1];
-  }
-}
-
 }  // namespace
 
 FillPlan plan_fill(const QuadSurface& s) {
@@ -119,7 +89,6 @@ FillPlan plan_fill(const QuadSurface& s) {
                "the fill meshes balls only");
   colour_nodes(s, plan);
   match_quads(s, plan);
-  choose_diagonals(s, plan);
   return plan;
 }
 

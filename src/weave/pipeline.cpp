@@ -73,9 +73,9 @@ void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine
 }
 
 /// The constructive fill in place of a weave, its nodes placed like a weave's.
-void fill_instead(MeshingResult& r, const QuadSurface& surface, const std::vector<fill::Cap>& caps) {
+void fill_instead(MeshingResult& r, const QuadSurface& surface, const std::filesystem::path& caps) {
   try {
-    fill::FilledMesh f = fill::fill_constructively(surface, caps);
+    fill::FilledMesh f = fill::fill_constructively(surface, fill::load_caps(caps));
     r.boundary_layer = {};
     r.failure.clear();
     r.smoothing = smooth_interior(f.mesh, f.on_boundary);
@@ -102,7 +102,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     attempt.strategy.seed = first_seed + r.attempts;
     if (options.before_attempt) options.before_attempt(r.attempts + 1, attempt.strategy, r.weave);
   }
-  if (!r.combinatorially_valid() && options.fill_caps) fill_instead(r, surface, *options.fill_caps);
+  if (!r.combinatorially_valid() && !options.fill_caps.empty()) fill_instead(r, surface, options.fill_caps);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -11,7 +11,6 @@
 #include "engine/engine.hpp"
 #include "engine/rule.hpp"
 #include "engine/strategy.hpp"
-#include "src/fill/cap.hpp"
 #include "src/stc/stc.hpp"
 
 namespace loom::weave {
@@ -34,9 +33,9 @@ struct WeaveOptions {
   /// weaves in all. Deterministic: the same attempts run in the same order.
   std::size_t attempts = 1;
   /// mesh_surface: when no attempt gives a mesh passing criteria 1-6, fill
-  /// the surface constructively with these caps (src/fill/fill.hpp) instead
-  /// of giving up. Null: do not.
-  const std::vector<fill::Cap>* fill_caps = nullptr;
+  /// the surface constructively (src/fill/fill.hpp) with the caps of this
+  /// directory (fill::default_caps_dir), read then. Empty: do not.
+  std::filesystem::path fill_caps;
   /// Called before each attempt but the first (a trace starts again), with
   /// the weave of the attempt before it.
   std::function<void(std::size_t attempt, const engine::Strategy&, const WeaveResult& previous)> before_attempt;
