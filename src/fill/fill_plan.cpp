@@ -61,6 +61,9 @@ void match_quads(const QuadSurface& s, FillPlan& plan) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edge_between;
   for (std::uint32_t e = 0; e < sides.size(); ++e) {
     auto [p, q] = sides[e];
+    if (q == UINT32_MAX)
+      fail_input(where, fmt::format("edge {}-{} is on one quad only", plan.edge_nodes[e][0], plan.edge_nodes[e][1]),
+                 "the fill needs a closed surface");
     if (edge_between.emplace(std::pair{std::min(p, q), std::max(p, q)}, e).second) boost::add_edge(p, q, dual);
   }
   std::vector<boost::graph_traits<Dual>::vertex_descriptor> mate(s.quads.size());
@@ -80,7 +83,8 @@ void match_quads(const QuadSurface& s, FillPlan& plan) {
 
 FillPlan plan_fill(const QuadSurface& s) {
   FillPlan plan;
-  if (s.quads.empty() || s.quads.size() % 2) fail_input(where, "the surface needs an even, non-zero number of quads");
+  if (s.quads.empty() || s.quads.size() % 2) fail_input(where, "the surface needs an even, non-zero number of quads",
+                                                           "split every quad into four to make the count even");
   number_edges(s, plan);
   long euler = static_cast<long>(s.points.size()) - static_cast<long>(plan.edge_nodes.size()) +
                static_cast<long>(s.quads.size());
