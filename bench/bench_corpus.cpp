@@ -37,11 +37,11 @@
 #include "bench/corpus_table.hpp"
 #include "src/check/validity.hpp"
 #include "src/fill/fill.hpp"
-#include "src/util/error.hpp"
 #include "src/gen/generators.hpp"
 #include "src/io/surface_io.hpp"
 #include "src/mesh/surface_validation.hpp"
 #include "src/stc/stc.hpp"
+#include "src/util/error.hpp"
 #include "src/weave/pipeline.hpp"
 
 namespace {

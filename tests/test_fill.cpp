@@ -84,7 +84,7 @@ TEST_CASE("caps: a malformed line names its file and line; a missing cap is repo
     std::filesystem::copy_file(e.path(), dir / e.path().filename());
   CHECK(fill::load_caps(dir.path()).size() == shipped_caps().size());
   write(dir / "cap_even_ab.cap", "even ab\nhex a_t b_t c_t d_t a_b b_b c_b x_q\n");
-  CHECK_THROWS_WITH_AS(fill::load_caps(dir.path()), doctest::Contains("cap_even_ab.cap:2: 'x_q' is not a cap node"),
+  CHECK_THROWS_WITH_AS(fill::load_caps(dir.path()), doctest::Contains("cap_even_ab.cap: line 2: 'x_q' is not a cap node"),
                        InputError);
   std::filesystem::remove(dir / "cap_even_ab.cap");
   CHECK_THROWS_WITH_AS(fill::load_caps(dir.path()), doctest::Contains("no cap with even wall ab"), InputError);

@@ -1,11 +1,10 @@
 #include "src/fill/cap.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
 #include <optional>
-#include <sstream>
 
+#include "src/io/text_scanner.hpp"
 #include "src/util/error.hpp"
 #include "src/weave/weave.hpp"
 
@@ -22,7 +21,7 @@ std::optional<std::uint32_t> edge_index(std::string_view name) {
   return std::nullopt;
 }
 
-std::optional<CapRole> parse_role(std::string_view s, const std::map<std::string, std::uint32_t>& inside) {
+std::optional<CapRole> parse_role(std::string_view s, const std::map<std::string, std::uint32_t, std::less<>>& inside) {
   using K = CapRole::Kind;
   if (s.size() == 3 && s[1] == '_') {
     auto c = corners.find(s[0]);
@@ -37,54 +36,50 @@ std::optional<CapRole> parse_role(std::string_view s, const std::map<std::string
   if (s == "Gd0" || s == "Gd1") return CapRole{K::triangle_centroid, static_cast<std::uint32_t>(s[2] - '0')};
   if (s.size() == 3 && (s[0] == 'M' || s[0] == 'W'))
     if (auto e = edge_index(s.substr(1))) return CapRole{s[0] == 'M' ? K::edge_mid : K::wall_centre, *e};
-  if (auto it = inside.find(std::string(s)); it != inside.end()) return CapRole{K::inside, it->second};
+  if (auto it = inside.find(s); it != inside.end()) return CapRole{K::inside, it->second};
   return std::nullopt;
 }
 
 Cap read_cap(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) fail_input(file.string(), "cannot read the cap file", "check the rules directory's fill/ folder");
+  const std::string text = read_input_file(file);
+  TextScanner in(text, file.string(), '#');
+  in.set_line_mode(true);
   Cap cap;
   cap.source = file.string();
-  std::map<std::string, std::uint32_t> inside;
+  std::map<std::string, std::uint32_t, std::less<>> inside;
   bool have_even = false;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    auto where = [&] { return fmt::format("{}:{}", file.string(), number); };
-    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-    std::istringstream words(line);
-    std::string keyword;
-    if (!(words >> keyword)) continue;
-    std::string rest;
+  while (!in.at_end()) {
+    std::string_view keyword = in.token();
     if (keyword == "even") {
-      std::string e;
-      words >> e;
+      std::string_view e = in.token_on_line();
       auto k = edge_index(e);
-      if (!k) fail_input(where(), fmt::format("'even {}': not an edge of the quad", e), "write ab, bc, cd or da");
+      if (!k) in.fail(fmt::format("'even {}': not an edge of the quad", e), "write ab, bc, cd or da");
       cap.even_edge = *k;
       have_even = true;
     } else if (keyword == "node") {
-      std::string name;
-      Vec3 p;
-      if (!(words >> name >> p[0] >> p[1] >> p[2]) || name.empty() || name[0] != 'i' || inside.count(name))
-        fail_input(where(), "expected 'node iN X Y Z' with a new name iN", "fix the line");
+      std::string name(in.token_on_line());
+      if (name.size() < 2 || name[0] != 'i' || inside.count(name))
+        in.fail(fmt::format("'{}' is not a new inside node", name), "write 'node iN X Y Z' with a name not used above");
+      Vec3 p = in.point(name);
       inside.emplace(name, static_cast<std::uint32_t>(cap.inside.size()));
       cap.inside.push_back(p);
     } else if (keyword == "hex") {
       std::array<CapRole, 8> hex;
       for (auto& role : hex) {
-        std::string s;
-        std::optional<CapRole> r;
-        if (!(words >> s) || !(r = parse_role(s, inside)))
-          fail_input(where(), fmt::format("'{}' is not a cap node", s),
-                     "use a role (a_t, b_m, Mab, Wbc, Mdiag, Gd0, ...) or a node declared above");
+        std::string_view s = in.token_on_line();
+        auto r = parse_role(s, inside);
+        if (!r)
+          in.fail(fmt::format("'{}' is not a cap node", s),
+                  "use a role (a_t, b_m, Mab, Wbc, Mdiag, Gd0, ...) or a node declared above; a hex has 8");
         role = *r;
       }
       cap.hexes.push_back(hex);
     } else {
-      fail_input(where(), fmt::format("unknown keyword '{}'", keyword), "lines are even, node or hex");
+      in.fail(fmt::format("unknown keyword '{}'", keyword), "lines are even, node or hex");
     }
-    if (words >> rest) fail_input(where(), fmt::format("unexpected '{}' at the end of the line", rest), "remove it");
+    if (auto extra = in.token_on_line(); !extra.empty())
+      in.fail(fmt::format("unexpected '{}' at the end of the line", extra), "remove it");
+    in.next_record();
   }
   if (!have_even || cap.hexes.empty()) fail_input(file.string(), "a cap needs an 'even' line and hexes", "see docs/fill.md");
   return cap;

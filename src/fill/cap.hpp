@@ -39,7 +39,7 @@ struct Cap {
 };
 
 /// The caps in `dir` (*.cap, sorted by name). Throws loom::InputError naming
-/// FILE:LINE for a malformed line, and when some even edge has no cap.
+/// the file and line of a malformed line, and when some even edge has no cap.
 std::vector<Cap> load_caps(const std::filesystem::path& dir);
 
 /// The caps `loom weave` uses: fill/ in its rules directory

@@ -5,9 +5,9 @@
 
 #include "src/fill/fill.hpp"
 #include "src/geometry/boundary_layer.hpp"
-#include "src/util/error.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
+#include "src/util/error.hpp"
 
 namespace loom::weave {
 
@@ -72,7 +72,9 @@ void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine
   }
 }
 
-/// The constructive fill in place of a weave, its nodes placed like a weave's.
+/// The constructive fill in place of a weave. Its nodes are smoothed, not
+/// place()d: the caps are pillowed, so no hex has two faces on the boundary
+/// and a boundary layer (place's second resort) could unlock nothing.
 void fill_instead(MeshingResult& r, const QuadSurface& surface, const std::filesystem::path& caps) {
   try {
     fill::FilledMesh f = fill::fill_constructively(surface, fill::load_caps(caps));
