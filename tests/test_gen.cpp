@@ -11,6 +11,7 @@
 #include "src/check/validity.hpp"
 #include "src/gen/catalog.hpp"
 #include "src/gen/generators.hpp"
+#include "src/quadmap/enumerate.hpp"
 #include "src/gen/sphere_embedding.hpp"
 #include "src/mesh/surface_validation.hpp"
 #include "src/util/error.hpp"
@@ -199,6 +200,7 @@ TEST_CASE("generators are deterministic and every quad count is even") {
     CAPTURE(kind.name);
     std::vector<int> args(kind.params.size(), 4);
     if (kind.name == "randquad") args = {40, 4};  // at least 6 quads
+    if (kind.name == "quadrangulation") args = {14, 4};
     const gen::GeneratedMesh a = kind.make(args), b = kind.make(args);
     if (const auto* s = std::get_if<QuadSurface>(&a)) {
       CHECK(!kind.hex_mesh);
@@ -225,6 +227,23 @@ TEST_CASE("bad sizes are input errors naming the kind") {
   CHECK(gen::find_generator_kind("pyramid") == nullptr);
   REQUIRE(gen::find_generator_kind("cylinder") != nullptr);
   CHECK(gen::usage(*gen::find_generator_kind("cylinder")) == "cylinder N H");
+  CHECK_THROWS_WITH_AS(gen::quadrangulation(7, 0), doctest::Contains("there are 0"), InputError);
+  CHECK_THROWS_WITH_AS(gen::quadrangulation(12, 11), doctest::Contains("choose I from 0 to 10"), InputError);
+  CHECK_THROWS_WITH_AS(gen::quadrangulation(22, 0), doctest::Contains("limit"), InputError);
+}
+
+TEST_CASE("quadrangulation: the enumerated 3-connected quadrangulations, on the sphere, valid inputs") {
+  std::size_t total = 0;
+  for (int f = 6; f <= 12; f += 2) {
+    const auto count = quadmap::three_connected_quadrangulations(f).size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const QuadSurface s = gen::quadrangulation(f, static_cast<int>(i));
+      CHECK(s.quads.size() == static_cast<std::size_t>(f));
+      check_surface(s);
+      ++total;
+    }
+  }
+  CHECK(total == 1 + 1 + 3 + 11);
 }
 
 namespace {

@@ -62,6 +62,11 @@ const std::vector<GeneratorKind>& generator_kinds() {
          require_at_least("randquad", {{"S", a[1]}}, 0);
          return randquad(a[0], static_cast<std::uint64_t>(a[1]));
        }},
+      {"quadrangulation",
+       {"F", "I"},
+       "3-connected quadrangulation number I (from 0) of those with F quads (6..20), on the unit sphere",
+       false,
+       [](const std::vector<int>& a) -> GeneratedMesh { return quadrangulation(a[0], a[1]); }},
       {"bosses",
        {"K"},
        "box with a cylindrical and a block boss, block-structured all-quad by Gmsh: 280 K^2 quads",

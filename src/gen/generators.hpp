@@ -58,6 +58,13 @@ QuadSurface torus(int n, int m);
 /// flips and diagonal slides, then laid out on the sphere (docs/generators.md).
 /// The same seed gives the same surface.
 QuadSurface randquad(int faces, std::uint64_t seed);
+/// Largest F for quadrangulation (F = 20 takes about 20 s to enumerate).
+inline constexpr int kMaxEnumeratedFaces = 20;
+/// The 3-connected quadrangulation of the sphere number `index` (from 0) among
+/// those with `faces` quads, in the enumerator's order (src/quadmap/enumerate.hpp:
+/// 1, 0, 1, 1, 3, 3, 11, ... for 6, 7, 8, ... quads), nodes on the unit
+/// sphere as randquad places them. The closure corpus is every one of 6..16 quads.
+QuadSurface quadrangulation(int faces, int index);
 /// Surface of the box [0,6]x[0,4]x[0,1.5] with a cylindrical boss (radius 0.8
 /// round (1.75, 2), up to z = 3) and a block boss ([3.5,5.5]x[1,3], up to z =
 /// 2.5) on top, meshed all-quad by Gmsh. `bosses`: the part cut into 29
