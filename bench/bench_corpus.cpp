@@ -42,7 +42,7 @@
 #include "src/mesh/surface_validation.hpp"
 #include "src/stc/stc.hpp"
 #include "src/util/error.hpp"
-#include "src/weave/pipeline.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 
 namespace {
 
@@ -64,7 +64,7 @@ struct Config {
   std::string strategy;
   std::uint64_t seed = 0;
   bool backtracking = true;
-  std::size_t attempts = 1;  ///< WeaveOptions::attempts (random restarts)
+  std::size_t attempts = 1;  ///< MeshingOptions::attempts (random restarts)
 };
 
 const std::vector<Config>& configs() {
@@ -165,12 +165,12 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
   r.faces = input.faces;
   r.quads = surface.quads.size();
   r.config = config.name;
-  weave::WeaveOptions options;
-  options.strategy = engine::Strategy::parse(config.strategy);
-  options.strategy.seed = config.seed;
-  if (!config.backtracking) options.max_backtracks = 0;
+  pipeline::MeshingOptions options;
+  options.weave.strategy = engine::Strategy::parse(config.strategy);
+  options.weave.strategy.seed = config.seed;
+  if (!config.backtracking) options.weave.max_backtracks = 0;
   options.attempts = config.attempts;
-  options.max_steps = max_steps;
+  options.weave.max_steps = max_steps;
   // A wall-clock guard: a run that explodes is stopped (the row says so).
   struct Timeout {
     std::size_t steps;
@@ -190,12 +190,12 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
     attempt = next;
   };
   if (timeout > 0)
-    options.after_step = [&](const engine::Application&, const stc::Stc&) {
+    options.weave.after_step = [&](const engine::Application&, const stc::Stc&) {
       if (++seen % 16 == 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout)
         throw Timeout{seen};
     };
   try {
-    weave::MeshingResult m = weave::mesh_surface(surface, rules, options);
+    pipeline::MeshingResult m = pipeline::mesh_surface(surface, rules, options);
     r.seconds = m.seconds;
     r.closed = m.weave.closed;
     r.steps = m.weave.steps;

@@ -1,7 +1,7 @@
 // bench_weave: weave speed and memory on boxes of 10^3 to 10^6 hexes.
 //
 // Weaves gen::box(n,n,n) with the shipped rules and the default strategy, as
-// weave::mesh_surface does, stage by stage so that each is timed on its own:
+// pipeline::mesh_surface does, stage by stage so that each is timed on its own:
 // initial STC, weave (rule applications), primal (construction, smoothing,
 // validity check). Each run happens in a fresh child process (this program
 // re-run with --one N), so its peak RSS (VmHWM) belongs to that size alone and
@@ -28,7 +28,7 @@
 #include "src/gen/generators.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
-#include "src/weave/pipeline.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 
 namespace {
 
@@ -129,12 +129,12 @@ RunFigures run_one(int n) {
   return f;
 }
 
-/// The staged run must weave what weave::mesh_surface weaves: same steps,
+/// The staged run must weave what pipeline::mesh_surface weaves: same steps,
 /// hexes and verdict (a guard against the two drifting apart).
 void check_against_pipeline(const RunFigures& staged) {
   QuadSurface surface = gen::box(staged.n, staged.n, staged.n);
   auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
-  weave::MeshingResult r = weave::mesh_surface(surface, std::move(rules), {});
+  pipeline::MeshingResult r = pipeline::mesh_surface(surface, std::move(rules), {});
   if (r.weave.steps != staged.steps || r.stc.hexes() != staged.hexes || r.combinatorially_valid() != staged.valid)
     throw std::logic_error(
         fmt::format("bench_weave: box {}^3: mesh_surface made {} hexes in {} steps, the staged run "

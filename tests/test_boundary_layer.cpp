@@ -19,7 +19,7 @@
 #include "src/geometry/placement.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
-#include "src/weave/pipeline.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 #include "tests/support.hpp"
 
 using namespace loom;
@@ -82,7 +82,7 @@ TEST_CASE("a grid's boundary layer: one hex per boundary quad, the boundary unch
 
 TEST_CASE("the pipeline pillows the cylinder's boundary layer and the cylinder comes out valid") {
   const QuadSurface surface = gen::cylinder(4, 6);
-  auto r = weave::mesh_surface(surface, shipped_rules(), {});
+  auto r = pipeline::mesh_surface(surface, shipped_rules(), {});
   REQUIRE_MESSAGE(r.mesh.has_value(), r.failure);
   REQUIRE(r.check.has_value());
   CHECK(r.check->valid());
@@ -107,7 +107,7 @@ TEST_CASE("the pipeline pillows the cylinder's boundary layer and the cylinder c
 
 TEST_CASE("a mesh that placement makes good enough keeps its woven hexes") {
   for (const QuadSurface& surface : {gen::lshape(4), gen::cubesphere(3), gen::tet4()}) {
-    auto r = weave::mesh_surface(surface, shipped_rules(), {});
+    auto r = pipeline::mesh_surface(surface, shipped_rules(), {});
     REQUIRE_MESSAGE(r.mesh.has_value(), r.failure);
     CHECK(r.check->valid());
     CHECK(r.boundary_layer.hexes_added == 0);
@@ -124,7 +124,10 @@ TEST_CASE("loom weave says when it pillowed the boundary layer, and the report c
   CHECK(r.out.find("woven: 352 hexes") == 0);
   CHECK(r.out.find("boundary layer pillowed (+192 hexes)") != std::string::npos);
   const auto j = nlohmann::json::parse(loom::test::slurp(dir / "c.json"));
-  CHECK(j["hexes"] == 160);
+  CHECK(j["woven_hexes"] == 160);
+  CHECK(j["hexes"] == 352);  // what was written: the woven hexes and the layer
+  CHECK(j["hex_sources"]["woven"] == 160);
+  CHECK(j["hex_sources"]["pillow"] == 192);
   CHECK(j["boundary_layer_hexes"] == 192);
   CHECK(j["below_zero"] == 0);
   CHECK(loom::test::run_cli("check " + (dir / "c.vtk").string() + " --boundary " + (dir / "c.obj").string()).status == 0);

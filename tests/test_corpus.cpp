@@ -14,7 +14,7 @@
 #include "engine/rule_compiler.hpp"
 #include "src/check/validity.hpp"
 #include "src/gen/generators.hpp"
-#include "src/weave/pipeline.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 
 using namespace loom;
 
@@ -58,10 +58,10 @@ TEST_CASE("corpus: the pipeline's verdict never beats the checker's") {
     for (const auto& [name, strategy] : strategies()) {
       CAPTURE(c.name);
       CAPTURE(name);
-      weave::WeaveOptions options;
-      options.strategy = strategy;
-      options.max_steps = 5000;  // these weaves need a few hundred at most
-      weave::MeshingResult r = weave::mesh_surface(surface, rules, options);
+      pipeline::MeshingOptions options;
+      options.weave.strategy = strategy;
+      options.weave.max_steps = 5000;  // these weaves need a few hundred at most
+      pipeline::MeshingResult r = pipeline::mesh_surface(surface, rules, options);
       if (!r.mesh) {
         CHECK_FALSE(r.combinatorially_valid());
         continue;

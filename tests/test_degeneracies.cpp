@@ -22,7 +22,7 @@
 #include "src/stc/primal.hpp"
 #include "src/weave/improper.hpp"
 #include "src/weave/pillow.hpp"
-#include "src/weave/pipeline.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 #include "src/weave/weave.hpp"
 #include "tests/support.hpp"
 
@@ -240,15 +240,15 @@ TEST_CASE("pillowing the through-cells of degenerate weaves keeps the STC invari
   auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
   for (auto [faces, seed] : {std::pair{26, 2}, std::pair{38, 1}}) {
     CAPTURE(faces);
-    weave::WeaveOptions options;
+    pipeline::MeshingOptions options;
     options.attempts = 2;
     // Checked here after every step, whether or not LOOM_CHECK_INVARIANTS is set.
     std::size_t steps = 0, broken = 0;
-    options.after_step = [&](const engine::Application&, const stc::Stc& st) {
+    options.weave.after_step = [&](const engine::Application&, const stc::Stc& st) {
       ++steps;
       broken += !st.check_invariants().empty();
     };
-    CHECK_NOTHROW(weave::mesh_surface(gen::randquad(faces, std::uint64_t(seed)), rules, options));
+    CHECK_NOTHROW(pipeline::mesh_surface(gen::randquad(faces, std::uint64_t(seed)), rules, options));
     CHECK(steps > 0);
     CHECK(broken == 0);
   }
@@ -312,7 +312,7 @@ TEST_CASE("pillow_improper: a closed weave of Schneiders' pyramid with hexes mee
 
 TEST_CASE("pillow_improper declines on a valid weave and while whiskers are left") {
   auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
-  auto r = weave::mesh_surface(gen::box(2, 2, 1), rules, {});
+  auto r = pipeline::mesh_surface(gen::box(2, 2, 1), rules, {});
   REQUIRE(r.combinatorially_valid());
   CHECK(r.weave.applications.count("pillow_improper") == 0);
   stc::Stc open = stc::build_from_surface(gen::schneiders());

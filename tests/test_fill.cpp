@@ -101,28 +101,36 @@ TEST_CASE("pillow_region: one hex on each quad of the region's boundary, the res
   CHECK(check_hex_mesh(grid).combinatorial_valid());
 }
 
-TEST_CASE("loom weave fills what no weave closes, and --no-fill stops instead") {
+TEST_CASE("loom weave closes what no weave closes; --closure none (or --no-fill) stops instead") {
   loom::test::ScratchDir dir("fillcli");
   std::filesystem::create_directory(dir / "rules");
   std::filesystem::copy_file(weave::default_rules_dir() / "cross.rule", dir / "rules" / "cross.rule");
   REQUIRE(loom::test::run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
   std::string args = "weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --attempts 2 --rules " +
                      (dir / "rules").string() + " --report " + (dir / "r.json").string();
+  // Crossing without seaming never closes: the closure meshes the box instead.
   auto r = loom::test::run_cli(args);
   CHECK((r.status == 0 || r.status == 3));
-  CHECK(r.out.rfind("filled: ", 0) == 0);
   auto j = nlohmann::json::parse(std::ifstream(dir / "r.json"));
-  CHECK(j["filled"] == true);
   CHECK(j["closed"] == false);
   CHECK(j["combinatorially_valid"] == true);
-  CHECK(j["mesh_hexes"].get<std::size_t>() > 8 * 24);  // at least the core's
+  CHECK((j["made_by"] == "closed" || j["made_by"] == "searched"));
+  CHECK(r.out.rfind(j["made_by"].get<std::string>() + ": ", 0) == 0);
+  CHECK(j["hex_sources"]["woven"].get<std::size_t>() + j["hex_sources"]["searched"].get<std::size_t>() +
+            j["hex_sources"]["database"].get<std::size_t>() + j["hex_sources"]["filled"].get<std::size_t>() +
+            j["hex_sources"]["pillow"].get<std::size_t>() ==
+        j["hexes"].get<std::size_t>());
   auto check = loom::test::run_cli("check " + (dir / "out.vtk").string() + " --boundary " + (dir / "box.obj").string());
   CHECK((check.status == 0 || check.out.find("criterion 7") != std::string::npos));  // only the geometry may fail
   std::filesystem::remove(dir / "out.vtk");
-  CHECK(loom::test::run_cli(args + " --partial").status == r.status);  // the weave's state, beside the filled mesh
+  CHECK(loom::test::run_cli(args + " --partial").status == r.status);  // the weave's state, beside the mesh
   CHECK(std::filesystem::exists(dir / "out.partial.vtk"));
-  std::filesystem::remove(dir / "out.vtk");
-  r = loom::test::run_cli(args + " --no-fill");
-  CHECK(r.status == 1);
-  CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
+  for (const char* off : {" --closure none", " --no-fill"}) {
+    std::filesystem::remove(dir / "out.vtk");
+    r = loom::test::run_cli(args + off);
+    CHECK(r.status == 1);
+    CHECK(r.err.find("weave did not close") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
+  }
+  CHECK(loom::test::run_cli(args + " --closure sometimes").status == 2);
 }

@@ -16,7 +16,7 @@
 #include "engine/vf2_reference.hpp"
 #include "src/gen/generators.hpp"
 #include "src/stc/build.hpp"
-#include "src/weave/pipeline.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 #include "tests/support.hpp"
 
 using namespace loom;
@@ -206,7 +206,7 @@ TEST_CASE("a new rule file in a temporary directory is applied without recompili
   rewrite { v.boundary = 2 }
 })");
   auto rules = engine::load_rule_dir(dir.path(), schema());
-  auto r = weave::mesh_surface(gen::box(2, 2, 2), rules, {});
+  auto r = pipeline::mesh_surface(gen::box(2, 2, 2), rules, {});
   CHECK(r.weave.closed);
   CHECK(r.weave.applications.at("mark") >= 8);  // at least the eight corners
 

@@ -17,7 +17,7 @@
 #include "src/gen/generators.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
-#include "src/weave/pipeline.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 #include "src/weave/smoothing.hpp"
 
 using namespace loom;
@@ -29,7 +29,7 @@ std::vector<engine::Rule> shipped_rules() {
 }
 
 /// The mesh the weave builds before placement, and its boundary-node flags
-/// (what weave::mesh_surface hands to smooth_interior).
+/// (what pipeline::mesh_surface hands to smooth_interior).
 struct Woven {
   HexMesh mesh;
   std::vector<bool> on_boundary;
@@ -168,7 +168,7 @@ TEST_CASE("woven curved parts: every hex that placement can make valid is valid"
 TEST_CASE("the cubespheres come out valid through the pipeline") {
   for (int n : {3, 6}) {
     CAPTURE(n);
-    auto r = weave::mesh_surface(gen::cubesphere(n), shipped_rules(), {});
+    auto r = pipeline::mesh_surface(gen::cubesphere(n), shipped_rules(), {});
     REQUIRE_MESSAGE(r.mesh.has_value(), r.failure);
     REQUIRE(r.check.has_value());
     CHECK(r.check->valid());
@@ -234,7 +234,7 @@ TEST_CASE("a structured grid with its interior untouched stays bit-identical") {
   }
 
   // The woven L-shape is its structured grid and is left alone too.
-  auto r = weave::mesh_surface(gen::lshape(3), shipped_rules(), {});
+  auto r = pipeline::mesh_surface(gen::lshape(3), shipped_rules(), {});
   REQUIRE(r.mesh.has_value());
   CHECK(r.smoothing.skipped);
   CHECK(r.check->quality.min_scaled_jacobian > 0.999);

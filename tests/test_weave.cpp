@@ -8,7 +8,7 @@
 #include "src/gen/generators.hpp"
 #include "src/io/hex_io.hpp"
 #include "src/stc/build.hpp"
-#include "src/weave/pipeline.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 #include "tests/support.hpp"
 
 using namespace loom;
@@ -18,8 +18,8 @@ std::vector<engine::Rule> shipped_rules() {
   return engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
 }
 
-weave::MeshingResult weave_box(int a, int b, int c) {
-  return weave::mesh_surface(gen::box(a, b, c), shipped_rules(), {});
+pipeline::MeshingResult weave_box(int a, int b, int c) {
+  return pipeline::mesh_surface(gen::box(a, b, c), shipped_rules(), {});
 }
 }  // namespace
 
@@ -57,7 +57,7 @@ TEST_CASE("a 10 x 10 x 10 box") {
 TEST_CASE("L-shapes close with good elements") {
   for (int n : {2, 3}) {
     CAPTURE(n);
-    auto r = weave::mesh_surface(gen::lshape(n), shipped_rules(), {});
+    auto r = pipeline::mesh_surface(gen::lshape(n), shipped_rules(), {});
     REQUIRE_MESSAGE(r.weave.closed, r.weave.left);
     REQUIRE(r.mesh.has_value());
     CHECK(r.mesh->hexes.size() == static_cast<std::size_t>(3 * n * n * n));
@@ -70,7 +70,7 @@ TEST_CASE("the block-structured bosses close, valid, at two sizes") {
   for (int k : {1, 2}) {
     CAPTURE(k);
     const QuadSurface surface = gen::bosses(k);
-    auto r = weave::mesh_surface(surface, shipped_rules(), {});
+    auto r = pipeline::mesh_surface(surface, shipped_rules(), {});
     REQUIRE_MESSAGE(r.weave.closed, r.weave.left);
     REQUIRE(r.mesh.has_value());
     CHECK(r.check->valid());  // criteria 1-7 against the surface: every scaled Jacobian > 0
@@ -84,11 +84,11 @@ TEST_CASE("the block-structured bosses close, valid, at two sizes") {
 TEST_CASE("the same input, rules and strategy give the same mesh") {
   for (const char* strategy : {"priority", "random"}) {
     CAPTURE(strategy);
-    weave::WeaveOptions options;
-    options.strategy = engine::Strategy::parse(strategy);
-    options.strategy.seed = 3;
-    auto a = weave::mesh_surface(gen::box(3, 2, 2), shipped_rules(), options);
-    auto b = weave::mesh_surface(gen::box(3, 2, 2), shipped_rules(), options);
+    pipeline::MeshingOptions options;
+    options.weave.strategy = engine::Strategy::parse(strategy);
+    options.weave.strategy.seed = 3;
+    auto a = pipeline::mesh_surface(gen::box(3, 2, 2), shipped_rules(), options);
+    auto b = pipeline::mesh_surface(gen::box(3, 2, 2), shipped_rules(), options);
     REQUIRE(a.mesh.has_value());
     REQUIRE(b.mesh.has_value());
     CHECK(a.mesh->hexes == b.mesh->hexes);
@@ -100,7 +100,7 @@ TEST_CASE("the same input, rules and strategy give the same mesh") {
 TEST_CASE("without the seam rule a 2x2x2 box cannot close") {
   auto rules = shipped_rules();
   std::erase_if(rules, [](const engine::Rule& r) { return r.name == "seam"; });
-  auto r = weave::mesh_surface(gen::box(2, 2, 2), std::move(rules), {});
+  auto r = pipeline::mesh_surface(gen::box(2, 2, 2), std::move(rules), {});
   CHECK_FALSE(r.weave.closed);
   CHECK(r.weave.left.find("whiskers") != std::string::npos);
   CHECK_FALSE(r.mesh.has_value());
@@ -140,7 +140,7 @@ TEST_CASE("cross never wraps a hex around the convex corner of another (no tripl
 TEST_CASE("each new attempt is told how the one before it ended") {
   // The spindle does not close under the shipped rules: every attempt stops
   // with whiskers left, and the next one is told what they were.
-  weave::WeaveOptions options;
+  pipeline::MeshingOptions options;
   options.attempts = 3;
   std::vector<std::size_t> attempts;
   std::vector<weave::WeaveResult> before;
@@ -150,7 +150,7 @@ TEST_CASE("each new attempt is told how the one before it ended") {
     attempts.push_back(attempt);
     before.push_back(previous);
   };
-  auto r = weave::mesh_surface(gen::spindle(), shipped_rules(), options);
+  auto r = pipeline::mesh_surface(gen::spindle(), shipped_rules(), options);
   REQUIRE_FALSE(r.weave.closed);
   CHECK(r.attempts == 3);
   CHECK(attempts == std::vector<std::size_t>{2, 3});

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -20,11 +21,11 @@
 #include "src/io/mesh_format.hpp"
 #include "src/io/surface_io.hpp"
 #include "src/mesh/surface_validation.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 #include "src/stc/primal.hpp"
 #include "src/stc/sheet_diagram.hpp"
 #include "src/util/atomic_file.hpp"
 #include "src/util/error.hpp"
-#include "src/weave/pipeline.hpp"
 #include "src/weave/step_dump.hpp"
 
 namespace {
@@ -33,7 +34,8 @@ struct Options {
   std::string surface, output, rules, strategy = "priority", dot_dir, trace, report;
   std::uint64_t seed = 0;
   std::size_t attempts = 16;
-  bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false, no_fill = false;
+  loom::pipeline::Closure closure = loom::pipeline::Closure::full;
+  bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false;
 };
 
 /// A broken rule is bad input: one line naming file:line:column.
@@ -76,7 +78,7 @@ std::string trace_line(const loom::engine::Application& a) {
   return line + "\n";
 }
 
-nlohmann::json report_json(const Options& o, const loom::weave::MeshingResult& r, const loom::engine::Strategy& strategy) {
+nlohmann::json report_json(const Options& o, const loom::pipeline::MeshingResult& r, const loom::engine::Strategy& strategy) {
   nlohmann::json j;
   j["input"] = o.surface;
   j["strategy"] = strategy.name();
@@ -87,9 +89,26 @@ nlohmann::json report_json(const Options& o, const loom::weave::MeshingResult& r
   j["steps"] = r.weave.steps;
   j["rule_applications"] = r.weave.applications;
   j["whiskers_left"] = r.weave.whiskers_left;
-  j["filled"] = r.filled;
-  j["hexes"] = r.stc.hexes();
-  j["mesh_hexes"] = r.mesh ? r.mesh->hexes.size() : 0;
+  j["filled"] = r.filled();
+  j["made_by"] = r.made_by.empty() ? "nothing" : r.made_by;
+  j["woven_hexes"] = r.stc.hexes();
+  j["hexes"] = r.mesh ? r.mesh->hexes.size() : 0;
+  j["mesh_hexes"] = j["hexes"];
+  nlohmann::json sources = nlohmann::json::object();
+  for (auto s : {loom::closure::HexSource::woven, loom::closure::HexSource::searched, loom::closure::HexSource::database,
+                 loom::closure::HexSource::filled, loom::closure::HexSource::pillow})
+    sources[loom::closure::source_name(s)] = std::count(r.source.begin(), r.source.end(), s);
+  j["hex_sources"] = sources;
+  if (r.made_by == "closed" || !r.closure_failure.empty()) {
+    const auto& c = r.closure;
+    j["closure"] = {{"woven_kept", c.woven}, {"woven_peeled", c.peeled}, {"cavities", c.cavities},
+                    {"front_quads", c.front_quads}, {"searched", c.searched}, {"database", c.database},
+                    {"filled", c.filled}, {"pillowed", c.pillowed}, {"filled_cavities", c.filled_cavities},
+                    {"fill_quads", c.fill_quads}, {"search_expanded", c.search.expanded},
+                    {"search_states", c.search.generated}, {"search_seconds", c.search.seconds},
+                    {"seconds", c.seconds}};
+    if (!r.closure_failure.empty()) j["closure_failure"] = r.closure_failure;
+  }
   j["sheets"] = r.stc.sheets();
   j["chords"] = r.stc.chords();
   j["valid"] = r.check && r.check->valid();
@@ -127,17 +146,19 @@ int run(const Options& o) {
   loom::QuadSurface surface = loom::read_surface(o.surface);
   loom::validate_surface(surface, o.surface, {.weld = o.weld});
   auto rules = load_rules(o.rules.empty() ? loom::weave::default_rules_dir().string() : o.rules);
-  loom::weave::WeaveOptions options;
-  options.strategy = parse_strategy(o, rules);
+  loom::pipeline::MeshingOptions options;
+  options.weave.strategy = parse_strategy(o, rules);
   options.attempts = o.attempts;
-  if (!o.no_fill) options.fill_caps = loom::fill::default_caps_dir();
+  options.closure = o.closure;
+  options.database = loom::closure::database_file(loom::weave::default_rules_dir());
+  options.fill_caps = loom::fill::default_caps_dir();
 
   std::string trace;
   std::optional<loom::weave::StepDumper> steps;
   if (o.dot_steps) steps.emplace(std::filesystem::path(o.dot_dir) / "steps", true);
   bool progress = !o.quiet && ::isatty(STDERR_FILENO);
   auto last = std::chrono::steady_clock::now();
-  options.after_step = [&](const loom::engine::Application& a, const loom::stc::Stc& stc) {
+  options.weave.after_step = [&](const loom::engine::Application& a, const loom::stc::Stc& stc) {
     if (!o.trace.empty()) trace += trace_line(a);
     if (steps) steps->dump(a, stc);
     if (progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(250)) {
@@ -151,9 +172,9 @@ int run(const Options& o) {
     if (steps) steps->clear();
   };
 
-  loom::weave::MeshingResult result;
+  loom::pipeline::MeshingResult result;
   try {
-    result = loom::weave::mesh_surface(surface, std::move(rules), options);
+    result = loom::pipeline::mesh_surface(surface, std::move(rules), options);
   } catch (const loom::engine::RuleError& e) {
     throw rule_error(e);
   }
@@ -170,26 +191,27 @@ int run(const Options& o) {
   if (!result.combinatorially_valid()) {
     const auto* fail = result.check ? result.check->first_failure() : nullptr;
     std::string why = fail ? fmt::format("criterion {} ({}) fails: {}", fail->number, fail->name, fail->detail) : result.failure;
-    if (result.filled) {
+    if (result.filled()) {
       std::cerr << "loom: internal error: the constructive fill's mesh is not valid: " << why
                 << "; nothing written; please report it with the input\n";
       return 1;
     }
+    std::string after;
+    if (!result.closure_failure.empty()) after += "; the cavity closure gave no mesh: " + result.closure_failure;
+    if (!result.fill_failure.empty()) after += "; nor can the constructive fill mesh it: " + result.fill_failure;
+    if (o.closure == loom::pipeline::Closure::none) after += "; try another --strategy, add rules, or drop --closure none";
     if (!result.weave.closed) {
       std::cerr << "loom: weave did not close" << (result.attempts > 1 ? fmt::format(" in {} attempts", result.attempts) : "")
-                << ": " << result.weave.left
-                << (result.fill_failure.empty() ? "; try another --strategy or add rules"
-                                                : "; nor can the constructive fill mesh it: " + result.fill_failure)
-                << "\n";
+                << ": " << result.weave.left << after << "\n";
       return 1;
     }
-    std::cerr << "loom: weave closed but the result is not a valid hex mesh: " << why
-              << (result.fill_failure.empty() ? "" : "; nor can the constructive fill mesh it: " + result.fill_failure)
-              << "; nothing written\n";
+    std::cerr << "loom: weave closed but the result is not a valid hex mesh: " << why << after << "; nothing written\n";
     return 1;
   }
   loom::write_hex_mesh(o.output, *result.mesh);
   const auto& q = result.check->quality;
+  const std::size_t hexes = result.mesh->hexes.size();
+  auto count = [&](loom::closure::HexSource s) { return std::count(result.source.begin(), result.source.end(), s); };
   std::string counts;
   for (const auto& [rule, n] : result.weave.applications) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", rule, n);
   std::string attempt = result.attempts == 1 ? std::string()
@@ -198,15 +220,29 @@ int run(const Options& o) {
   std::string layer = result.boundary_layer.hexes_added == 0
                           ? std::string()
                           : fmt::format(", boundary layer pillowed (+{} hexes)", result.boundary_layer.hexes_added);
-  if (result.filled)
-    std::cout << fmt::format("filled: {} hexes by the constructive fill, as no weave gave a valid mesh in {} attempt{}; "
-                             "min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
-                             result.mesh->hexes.size(), result.attempts, result.attempts == 1 ? "" : "s",
-                             q.min_scaled_jacobian, q.mean_scaled_jacobian, o.output);
+  std::string quality = fmt::format("min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}", q.min_scaled_jacobian,
+                                    q.mean_scaled_jacobian, o.output);
+  using loom::closure::HexSource;
+  if (result.made_by == "filled")
+    std::cout << fmt::format("filled: {} hexes by the constructive fill, as neither the weave ({} attempt{}) nor the "
+                             "cavity closure gave a valid mesh; {}\n",
+                             hexes, result.attempts, result.attempts == 1 ? "" : "s", quality);
+  else if (result.made_by == "closed")
+    std::cout << fmt::format("closed: {} hexes = {} woven (of the weave that left the fewest whiskers; {} peeled) + {} "
+                             "searched + {} from the database + {} filled + {} pillow, in {} cavit{} of {} quads{}; {}\n",
+                             hexes, count(HexSource::woven), result.closure.peeled, count(HexSource::searched),
+                             count(HexSource::database), count(HexSource::filled), count(HexSource::pillow),
+                             result.closure.cavities, result.closure.cavities == 1 ? "y" : "ies",
+                             result.closure.front_quads, layer, quality);
+  else if (result.made_by == "searched")
+    std::cout << fmt::format("searched: {} hexes = {} searched + {} from the database, from the surface itself, fewer "
+                             "than the weave gave{}{}; {}\n",
+                             hexes, count(HexSource::searched), count(HexSource::database),
+                             result.weave.closed ? fmt::format(" ({} hexes)", result.stc.hexes()) : " (it did not close)",
+                             layer, quality);
   else
-    std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}{}; min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}\n",
-                             result.mesh->hexes.size(), result.mesh->hexes.size() == 1 ? "" : "es", result.weave.steps,
-                             counts, attempt, layer, q.min_scaled_jacobian, q.mean_scaled_jacobian, o.output);
+    std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}{}; {}\n", hexes, hexes == 1 ? "" : "es",
+                             result.weave.steps, counts, attempt, layer, quality);
   if (q.below_zero > 0) {
     std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}); the mesh is written "
                              "for its connectivity\n", q.below_zero, q.min_scaled_jacobian);
@@ -232,7 +268,14 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
   app.add_option("--trace", o->trace, "write one line per rule application to this file");
   app.add_option("--report", o->report, "write a JSON report to this file");
   app.add_flag("--partial", o->partial, "when the weave does not close, write the hexes woven so far and the STC (DOT/SVG) for inspection");
-  app.add_flag("--no-fill", o->no_fill, "when no weave gives a valid mesh, stop (status 1) instead of filling the surface constructively");
+  const std::map<std::string, loom::pipeline::Closure> closures{{"none", loom::pipeline::Closure::none},
+                                                                 {"search", loom::pipeline::Closure::search},
+                                                                 {"full", loom::pipeline::Closure::full}};
+  app.add_option("--closure", o->closure,
+                 "what runs when no weave gives a valid mesh: full (default: cavity search, database and fill, then "
+                 "the whole-surface fill), search (cavity search and database only) or none (the weave alone)")
+      ->transform(CLI::CheckedTransformer(closures, CLI::ignore_case));
+  app.add_flag_callback("--no-fill", [o] { o->closure = loom::pipeline::Closure::none; }, "the same as --closure none");
   app.add_flag("-q,--quiet", o->quiet, "no progress line");
   app.add_flag("--weld", o->weld, "merge coincident surface nodes instead of rejecting them");
   return std::function<int()>([o] {

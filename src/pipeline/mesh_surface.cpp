@@ -1,6 +1,8 @@
-#include "src/weave/pipeline.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 
 #include "src/fill/fill.hpp"
@@ -9,81 +11,178 @@
 #include "src/stc/primal.hpp"
 #include "src/util/error.hpp"
 
-namespace loom::weave {
+namespace loom::pipeline {
+
+using closure::HexSource;
 
 namespace {
 
+constexpr std::size_t kBesideValidExpansions = 500;
+
 /// Fewer hexes <= 0, or as many and fewer < 0.2.
-bool improves(const SmoothingReport& a, const SmoothingReport& b) {
+bool improves(const weave::SmoothingReport& a, const weave::SmoothingReport& b) {
   if (a.below_zero_after != b.below_zero_after) return a.below_zero_after < b.below_zero_after;
   return a.below_0_2_after < b.below_0_2_after;
 }
 
-/// The boundary layer pillowed into `mesh` and the nodes placed; false (and
-/// nothing changed) when the result fails criteria 1-6 or, with `only_if_better`,
-/// is not better than what r.smoothing says of the mesh without it.
-bool place_with_boundary_layer(MeshingResult& r, HexMesh& mesh, std::vector<bool> fixed, const QuadSurface& surface,
-                               bool only_if_better) {
-  HexMesh pillowed = mesh;
+/// A mesh on its way out: its hexes' sources and the nodes placement must not move.
+struct Candidate {
+  HexMesh mesh;
+  std::vector<HexSource> source;
+  std::vector<bool> fixed;
+  weave::SmoothingReport smoothing;
+  std::optional<ValidityReport> check;
+  geometry::BoundaryLayerReport layer;
+  bool valid() const { return check && check->combinatorial_valid(); }
+};
+
+/// The boundary layer pillowed into the candidate and its nodes placed; false
+/// (and nothing changed) when the result fails criteria 1-6 or, with
+/// `only_if_better`, is not better than the candidate as it is.
+bool place_with_boundary_layer(Candidate& c, const QuadSurface& surface, bool only_if_better) {
+  HexMesh pillowed = c.mesh;
+  std::vector<bool> fixed = c.fixed;
   const auto layer = geometry::pillow_boundary_layer(pillowed, fixed);
-  auto placed = smooth_interior(pillowed, fixed);
+  auto placed = weave::smooth_interior(pillowed, fixed);
   auto check = check_hex_mesh(pillowed, &surface);
-  if (!check.combinatorial_valid() || (only_if_better && !improves(placed, r.smoothing))) return false;
-  mesh = std::move(pillowed);
-  r.smoothing = placed;
-  r.check = std::move(check);
-  r.boundary_layer = layer;
+  if (!check.combinatorial_valid() || (only_if_better && !improves(placed, c.smoothing))) return false;
+  c.source.resize(pillowed.hexes.size(), HexSource::pillow);
+  c.mesh = std::move(pillowed);
+  c.smoothing = placed;
+  c.check = std::move(check);
+  c.layer = layer;
   return true;
 }
 
-/// Node placement, and the boundary layer when it helps. A woven hex with two
-/// faces on one flat part of the boundary has corners whose four nodes are
-/// all on the boundary: locked, whatever placement does. When some locked
-/// corner is below 0.2 the layer goes in first (placing the mesh without it
-/// would be wasted work); otherwise the mesh is placed, and a layer is tried
-/// when hexes <= 0 or < 0.2 are left, and kept when it does better.
-void place(MeshingResult& r, HexMesh& mesh, const std::vector<bool>& on_boundary, const QuadSurface& surface) {
-  const auto locked = geometry::locked_corners(mesh, on_boundary);
-  if (locked.below_0_2 > 0 && place_with_boundary_layer(r, mesh, on_boundary, surface, false)) return;
-  r.smoothing = smooth_interior(mesh, on_boundary);
-  r.check = check_hex_mesh(mesh, &surface);
-  if (locked.below_0_2 == 0 && r.check->combinatorial_valid() &&
-      (r.smoothing.below_zero_after > 0 || r.smoothing.below_0_2_after > 0))
-    place_with_boundary_layer(r, mesh, on_boundary, surface, true);
+/// Node placement, and the boundary layer when it helps. A hex with two faces
+/// on one flat part of the boundary has corners whose four nodes are all on
+/// the boundary: locked, whatever placement does. When some locked corner is
+/// below 0.2 the layer goes in first (placing the mesh without it would be
+/// wasted work); otherwise the mesh is placed, and a layer is tried when
+/// hexes <= 0 or < 0.2 are left, and kept when it does better.
+void place(Candidate& c, const QuadSurface& surface) {
+  const auto locked = geometry::locked_corners(c.mesh, c.fixed);
+  if (locked.below_0_2 > 0 && place_with_boundary_layer(c, surface, false)) return;
+  c.smoothing = weave::smooth_interior(c.mesh, c.fixed);
+  c.check = check_hex_mesh(c.mesh, &surface);
+  if (locked.below_0_2 == 0 && c.valid() && (c.smoothing.below_zero_after > 0 || c.smoothing.below_0_2_after > 0))
+    place_with_boundary_layer(c, surface, true);
+}
+
+/// Takes `c` as the result.
+void adopt(MeshingResult& r, Candidate&& c, std::string made_by) {
+  r.mesh = std::move(c.mesh);
+  r.source = std::move(c.source);
+  r.check = std::move(c.check);
+  r.smoothing = c.smoothing;
+  r.boundary_layer = c.layer;
+  r.made_by = std::move(made_by);
 }
 
 void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine::Rule> rules,
-                const WeaveOptions& options) {
+                const weave::WeaveOptions& options) {
   r.stc = stc::build_from_surface(surface);
-  r.weave = weave(r.stc, std::move(rules), options);
+  r.weave = weave::weave(r.stc, std::move(rules), options);
   r.mesh.reset();
   r.check.reset();
+  r.source.clear();
   r.failure.clear();
+  r.made_by.clear();
   r.smoothing = {};
   r.boundary_layer = {};
   if (!r.weave.closed) return;
   try {
-    std::vector<bool> on_boundary;
-    HexMesh mesh = stc::to_hex_mesh(r.stc, &on_boundary);
-    place(r, mesh, on_boundary, surface);
-    r.mesh = std::move(mesh);
+    Candidate c;
+    c.mesh = stc::to_hex_mesh(r.stc, &c.fixed);
+    c.source.assign(c.mesh.hexes.size(), HexSource::woven);
+    place(c, surface);
+    adopt(r, std::move(c), "woven");
   } catch (const std::runtime_error& e) {
     r.failure = e.what();
   }
 }
 
-/// The constructive fill in place of a weave. Its nodes are smoothed, not
-/// place()d: the caps are pillowed, so no hex has two faces on the boundary
-/// and a boundary layer (place's second resort) could unlock nothing.
-void fill_instead(MeshingResult& r, const QuadSurface& surface, const std::filesystem::path& caps) {
+/// What the stages after the weave read, loaded when first needed.
+class Resources {
+public:
+  explicit Resources(const MeshingOptions& o) : o_(o) {}
+  const closure::Database* database() {
+    if (!db_ && !o_.database.empty()) db_ = closure::Database::load(o_.database);
+    return db_ ? &*db_ : nullptr;
+  }
+  const std::vector<fill::Cap>& caps() {
+    if (!caps_ && !o_.fill_caps.empty()) caps_ = fill::load_caps(o_.fill_caps);
+    static const std::vector<fill::Cap> none;
+    return caps_ ? *caps_ : none;
+  }
+
+private:
+  const MeshingOptions& o_;
+  std::optional<closure::Database> db_;
+  std::optional<std::vector<fill::Cap>> caps_;
+};
+
+/// A candidate from a closed mesh: placed and checked.
+Candidate placed_candidate(ClosedMesh&& closed, const QuadSurface& surface) {
+  Candidate c;
+  c.mesh = std::move(closed.mesh);
+  c.source = std::move(closed.source);
+  c.fixed = std::move(closed.on_boundary);
+  place(c, surface);
+  return c;
+}
+
+void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMesh& woven, Resources& res,
+                       const MeshingOptions& options) {
   try {
-    fill::FilledMesh f = fill::fill_constructively(surface, fill::load_caps(caps));
-    r.boundary_layer = {};
-    r.failure.clear();
-    r.smoothing = smooth_interior(f.mesh, f.on_boundary);
-    r.check = check_hex_mesh(f.mesh, &surface);
-    r.mesh = std::move(f.mesh);
-    r.filled = true;
+    const bool fill = options.closure == Closure::full;
+    ClosedMesh closed = close_cavities(surface, woven, res.database(), fill ? res.caps() : std::vector<fill::Cap>{},
+                                       options.search);
+    r.closure = closed.report;
+    if (!closed.complete) {
+      r.closure_failure = "the search left cavities and the fill is off";
+      return;
+    }
+    Candidate c = placed_candidate(std::move(closed), surface);
+    if (!c.valid()) {
+      const auto* f = c.check->first_failure();
+      r.closure_failure = f ? "criterion " + std::to_string(f->number) + " (" + f->name + ") fails: " + f->detail : "";
+      return;
+    }
+    adopt(r, std::move(c), "closed");
+  } catch (const InputError& e) {
+    r.closure_failure = e.what();
+  }
+}
+
+/// Small surfaces: the search alone, from the surface; kept if it beats what there is.
+void search_from_surface(MeshingResult& r, const QuadSurface& surface, Resources& res, const MeshingOptions& options) {
+  try {
+    closure::ClosureOptions search = options.search;
+    // Beside a valid mesh, only a short search: it has to find a smaller one.
+    if (r.combinatorially_valid())
+      search.limits.max_expansions = std::min<std::size_t>(search.limits.max_expansions, kBesideValidExpansions);
+    ClosedMesh closed = close_cavities(surface, HexMesh{surface.points, {}}, res.database(), {}, search);
+    if (!closed.complete || (r.combinatorially_valid() && closed.mesh.hexes.size() >= r.mesh->hexes.size())) return;
+    Candidate c = placed_candidate(std::move(closed), surface);
+    if (c.valid()) adopt(r, std::move(c), "searched");
+  } catch (const InputError& e) {
+    if (r.closure_failure.empty()) r.closure_failure = e.what();
+  }
+}
+
+void fill_whole_surface(MeshingResult& r, const QuadSurface& surface, Resources& res) {
+  try {
+    fill::FilledMesh f = fill::fill_constructively(surface, res.caps());
+    Candidate c;
+    c.mesh = std::move(f.mesh);
+    c.fixed = std::move(f.on_boundary);
+    c.source.assign(c.mesh.hexes.size(), HexSource::filled);
+    // Its caps are pillowed, so no hex has two faces on the boundary and a
+    // boundary layer (place's second resort) could unlock nothing.
+    c.smoothing = weave::smooth_interior(c.mesh, c.fixed);
+    c.check = check_hex_mesh(c.mesh, &surface);
+    adopt(r, std::move(c), "filled");
   } catch (const InputError& e) {
     r.fill_failure = e.what();
   }
@@ -91,22 +190,35 @@ void fill_instead(MeshingResult& r, const QuadSurface& surface, const std::files
 
 }  // namespace
 
-MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const WeaveOptions& options) {
-  auto start = std::chrono::steady_clock::now();
+MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const MeshingOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
   MeshingResult r;
-  WeaveOptions attempt = options;
-  const std::uint64_t first_seed = options.strategy.kind == engine::Strategy::Kind::random ? options.strategy.seed : 0;
+  weave::WeaveOptions attempt = options.weave;
+  const std::uint64_t first_seed =
+      options.weave.strategy.kind == engine::Strategy::Kind::random ? options.weave.strategy.seed : 0;
+  std::optional<HexMesh> best_woven;  // of the attempt that left the fewest whiskers
+  std::size_t best_left = SIZE_MAX;
   for (r.attempts = 1;; ++r.attempts) {
     r.strategy = attempt.strategy;
     weave_once(r, surface, rules, attempt);
-    if (r.combinatorially_valid() || r.attempts >= options.attempts) break;
+    if (r.combinatorially_valid()) break;
+    if (options.closure != Closure::none && r.weave.whiskers_left < best_left) {
+      best_left = r.weave.whiskers_left;
+      best_woven = stc::woven_over_surface(r.stc, surface.points.size());
+    }
+    if (r.attempts >= options.attempts) break;
     attempt.strategy = engine::Strategy::parse("random");
     attempt.strategy.seed = first_seed + r.attempts;
     if (options.before_attempt) options.before_attempt(r.attempts + 1, attempt.strategy, r.weave);
   }
-  if (!r.combinatorially_valid() && !options.fill_caps.empty()) fill_instead(r, surface, options.fill_caps);
+  if (options.closure != Closure::none) {
+    Resources res(options);
+    if (!r.combinatorially_valid()) close_cavities_of(r, surface, *best_woven, res, options);
+    if (surface.quads.size() <= kDirectSearchQuads) search_from_surface(r, surface, res, options);
+    if (!r.combinatorially_valid() && options.closure == Closure::full) fill_whole_surface(r, surface, res);
+  }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
 
-}  // namespace loom::weave
+}  // namespace loom::pipeline

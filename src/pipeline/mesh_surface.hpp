@@ -1,44 +1,88 @@
 #pragma once
-// Surface in, hex mesh out: initial STC, weave, primal construction, node
-// placement, validity check. The one entry point `loom weave` and the tests use.
+// Surface in, hex mesh out: the one entry point `loom weave` and the tests
+// use. It sits above weave/, closure/ and fill/ and decides which of them
+// runs (docs/closure.md):
+//   1. weave: the rules, under the strategy, then under the random strategy
+//      with seeds 1, 2, ... until a weave gives a mesh passing criteria 1-6
+//      (MeshingOptions::attempts);
+//   2. cavity closure (unless Closure::none): when no weave did, the woven
+//      hexes of the attempt that left the fewest whiskers are kept as far as
+//      they can be part of a valid mesh, and each cavity left is closed by
+//      search and the database, then (Closure::full) filled where the search
+//      stopped short. A surface of at most kDirectSearchQuads quads is also
+//      closed by search from the surface itself, and the smaller valid mesh kept;
+//   3. whole-surface fill (Closure::full), the last resort.
+// Then node placement and the validity check.
+#include <cstddef>
+#include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "src/check/validity.hpp"
+#include "src/closure/database.hpp"
+#include "src/closure/shelling_search.hpp"
 #include "src/geometry/boundary_layer.hpp"
 #include "src/mesh/hex_mesh.hpp"
 #include "src/mesh/quad_surface.hpp"
+#include "src/pipeline/cavity_closure.hpp"
 #include "src/stc/stc.hpp"
 #include "src/weave/smoothing.hpp"
 #include "src/weave/weave.hpp"
 
-namespace loom::weave {
+namespace loom::pipeline {
+
+enum class Closure {
+  none,    ///< the weave's mesh or nothing
+  search,  ///< also close cavities by search and the database (no fill)
+  full,    ///< also fill what the search leaves, and at last the whole surface
+};
+
+/// Surfaces with at most this many quads are also closed by search alone.
+inline constexpr std::size_t kDirectSearchQuads = 24;
+
+struct MeshingOptions {
+  weave::WeaveOptions weave;
+  /// Weaves in all (see step 1); deterministic: the same attempts in the same order.
+  std::size_t attempts = 1;
+  /// Called before each attempt but the first (a trace starts again), with
+  /// the weave of the attempt before it.
+  std::function<void(std::size_t attempt, const engine::Strategy&, const weave::WeaveResult& previous)> before_attempt;
+  Closure closure = Closure::none;
+  /// The database file and the fill's caps directory, read when first needed.
+  std::filesystem::path database, fill_caps;
+  closure::ClosureOptions search;
+};
 
 struct MeshingResult {
-  stc::Stc stc;                          ///< the weave's final state
-  WeaveResult weave;
-  std::optional<HexMesh> mesh;           ///< when the weave closed and dualized
+  stc::Stc stc;                          ///< the last attempt's final weave state
+  weave::WeaveResult weave;              ///< of the last attempt
+  std::optional<HexMesh> mesh;           ///< when some stage gave one
+  std::vector<closure::HexSource> source;  ///< per hex of `mesh`
   std::optional<ValidityReport> check;   ///< of `mesh`, against the surface
-  SmoothingReport smoothing;             ///< of the mesh as returned
+  weave::SmoothingReport smoothing;      ///< of the mesh as returned
   /// Hexes and nodes added by pillowing the boundary layer (zero when it was
   /// not needed): done when placement leaves hexes <= 0, kept when it helps.
   geometry::BoundaryLayerReport boundary_layer;
-  std::string failure;                   ///< why there is no mesh, when the weave closed
-  /// The mesh is the constructive fill's (WeaveOptions::fill_caps): no weave
-  /// gave one. `weave` and `stc` still describe the last attempt.
-  bool filled = false;
-  std::string fill_failure;              ///< why the fill could not run, when it was asked for
-  double seconds = 0;                    ///< of all attempts
-  std::size_t attempts = 1;              ///< weaves run (see WeaveOptions::attempts)
+  std::string failure;                   ///< why a closed weave gave no mesh
+  /// Which stage made the mesh: "woven", "closed" (cavity closure), "searched"
+  /// (search from the surface itself) or "filled" (whole-surface fill).
+  std::string made_by;
+  ClosureReport closure;                 ///< of the cavity closure, when it ran
+  std::string closure_failure;           ///< why it gave no mesh, when it ran and did not
+  std::string fill_failure;              ///< why the whole-surface fill could not run
+  double seconds = 0;                    ///< of everything
+  std::size_t attempts = 1;              ///< weaves run
   engine::Strategy strategy;             ///< of the last attempt, the one reported
-  /// The mesh is written: closed and criteria 1-6 hold (geometry may still be bad).
+  /// The mesh passes criteria 1-6 (geometry may still be bad).
   bool combinatorially_valid() const { return mesh && check && check->combinatorial_valid(); }
+  bool filled() const { return made_by == "filled"; }
 };
 
-/// Weaves a validated, outward-oriented surface with `rules` (again, under
-/// other strategies, as WeaveOptions::attempts allows). A rule that
-/// fails while it runs throws engine::RuleError naming its file and line.
-MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const WeaveOptions& options);
+/// Weaves a validated, outward-oriented surface with `rules`, then closes or
+/// fills as MeshingOptions::closure allows. A rule that fails while it runs
+/// throws engine::RuleError naming its file and line.
+MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const MeshingOptions& options);
 
-}  // namespace loom::weave
+}  // namespace loom::pipeline

@@ -80,4 +80,33 @@ HexMesh woven_hexes(const Stc& stc) {
   return mesh;
 }
 
+HexMesh woven_over_surface(const Stc& stc, std::size_t surface_points) {
+  const engine::Graph& g = stc.graph();
+  const StcSchema& ids = stc.ids();
+  HexMesh mesh;
+  mesh.points.assign(stc.points().begin(), stc.points().begin() + static_cast<std::ptrdiff_t>(surface_points));
+  std::vector<std::uint32_t> index(g.id_bound(), UINT32_MAX);
+  auto vertex_of = [&](Id n) -> std::uint32_t {
+    const std::int32_t boundary = g.get(n, ids.node_boundary);
+    const std::int32_t p = g.get(n, ids.node_point);
+    if (boundary > 1) return UINT32_MAX;
+    if (boundary == 1) return p >= 0 && static_cast<std::size_t>(p) < surface_points ? static_cast<std::uint32_t>(p) : UINT32_MAX;
+    if (index[n] == UINT32_MAX) {
+      index[n] = static_cast<std::uint32_t>(mesh.points.size());
+      mesh.points.push_back(p >= 0 ? stc.points().at(static_cast<std::size_t>(p)) : Vec3{0, 0, 0});
+    }
+    return index[n];
+  };
+  for (Id h : g.members(ids.hex)) {
+    Hex hex{};
+    bool whole = true;
+    for (unsigned k = 0; k < 8 && whole; ++k) {
+      const Id n = corner_node(stc, h, k);
+      whole = n != no_element && (hex[k] = vertex_of(n)) != UINT32_MAX;
+    }
+    if (whole) mesh.hexes.push_back(hex);
+  }
+  return mesh;
+}
+
 }  // namespace loom::stc

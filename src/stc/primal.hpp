@@ -28,4 +28,11 @@ HexMesh to_hex_mesh(const Stc& stc, std::vector<bool>* on_boundary = nullptr);
 /// it uses (unplaced nodes at the origin). For inspecting a weave that did not close.
 HexMesh woven_hexes(const Stc& stc);
 
+/// The hexes of a weave in progress numbered as the surface it was built from
+/// (build_from_surface): points 0..surface_points-1 are the surface's, in
+/// order, then one per inner node used (at its position, or the origin while
+/// unplaced). A hex that is degenerate or has a node standing for several
+/// surface nodes (a through-cell, node.boundary > 1) is left out.
+HexMesh woven_over_surface(const Stc& stc, std::size_t surface_points);
+
 }  // namespace loom::stc

@@ -27,18 +27,6 @@ struct WeaveOptions {
   std::size_t max_backtracks = 200;
   std::size_t branching = 3;
   std::size_t backtrack_window = 64;
-  /// mesh_surface: when a weave does not give a mesh passing criteria 1-6,
-  /// weave again from the start with the random strategy, seeds 1, 2, ...
-  /// (after the strategy's own seed when it is random), up to this many
-  /// weaves in all. Deterministic: the same attempts run in the same order.
-  std::size_t attempts = 1;
-  /// mesh_surface: when no attempt gives a mesh passing criteria 1-6, fill
-  /// the surface constructively (src/fill/fill.hpp) with the caps of this
-  /// directory (fill::default_caps_dir), read then. Empty: do not.
-  std::filesystem::path fill_caps;
-  /// Called before each attempt but the first (a trace starts again), with
-  /// the weave of the attempt before it.
-  std::function<void(std::size_t attempt, const engine::Strategy&, const WeaveResult& previous)> before_attempt;
   /// Called after every application (trace, pictures, progress).
   std::function<void(const engine::Application&, const stc::Stc&)> after_step;
 };

@@ -1,0 +1,50 @@
+// make_database: builds the closure's database of small hexahedrizations
+// (src/closure/database.hpp) and writes it; scripts/make-database.sh runs it
+// with the shipped limits. Prints how many boundaries each level reached,
+// the time and the peak memory.
+#include <sys/resource.h>
+
+#include <chrono>
+#include <iostream>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "bench/bench_options.hpp"
+#include "src/closure/database.hpp"
+
+int main(int argc, char** argv) {
+  using namespace loom;
+  CLI::App app("Builds the closure's database of small hexahedrizations");
+  closure::DatabaseLimits limits{255, 24, 18};
+  std::string output;
+  app.add_option("-o,--output", output, "file to write (rules/closure/database.txt)")->required();
+  app.add_option("--max-hexes", limits.max_hexes, "meshes of up to this many hexes (default 255: no limit)")
+      ->check(CLI::Range(1, 255));
+  app.add_option("--max-quads", limits.max_quads, "grow boundaries of up to this many quads (default 24)")
+      ->check(CLI::Range(6, 64));
+  app.add_option("--store-quads", limits.store_quads, "keep boundaries of up to this many quads (default 18)")
+      ->check(CLI::Range(6, 64));
+  bench::parse_or_exit(app, argc, argv);
+
+  const auto start = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  const closure::Database db = closure::Database::build(limits, [&](int hexes, std::size_t reached) {
+    if (hexes % 5 == 0) std::cerr << fmt::format("{} hexes: {} boundaries reached ({:.0f} s)\n", hexes, reached, seconds());
+  });
+  db.save(output);
+  std::map<std::size_t, std::pair<std::size_t, std::size_t>> by_quads;  // quads -> (entries, most hexes)
+  for (const auto& e : db.entries()) {
+    auto& [n, most] = by_quads[quadmap::code_quads(e.code)];
+    ++n;
+    most = std::max(most, e.hexes());
+  }
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::cout << fmt::format("wrote {}: {} boundaries of at most {} quads (grown up to {}), {:.0f} s, peak {:.0f} MB\n",
+                           output, db.size(), limits.store_quads, limits.max_quads, seconds(),
+                           static_cast<double>(usage.ru_maxrss) / 1024.0);
+  for (const auto& [quads, stat] : by_quads)
+    std::cout << fmt::format("  {:3} quads: {:6} boundaries, at most {} hexes\n", quads, stat.first, stat.second);
+  return 0;
+}

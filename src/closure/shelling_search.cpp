@@ -1,0 +1,361 @@
+#include "src/closure/shelling_search.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "src/closure/hex_meeting.hpp"
+#include "src/quadmap/canonical.hpp"
+#include "src/quadmap/hex_glue.hpp"
+
+namespace loom::closure {
+
+using quadmap::Code;
+using quadmap::QuadMap;
+
+const char* source_name(HexSource s) {
+  switch (s) {
+    case HexSource::woven: return "woven";
+    case HexSource::searched: return "searched";
+    case HexSource::database: return "database";
+    case HexSource::filled: return "filled";
+    case HexSource::pillow: return "pillow";
+  }
+  return "?";
+}
+
+namespace {
+
+class Stopwatch {
+public:
+  /// Seconds since the last lap (or since made).
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+
+private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+Hex mirror_hex(const Hex& h) { return {h[4], h[5], h[6], h[7], h[0], h[1], h[2], h[3]}; }
+
+/// A hash of a quad as a set of corners: a front's key is the exclusive or of
+/// its quads' (so a gluing updates it in O(k)).
+std::uint64_t quad_hash(const Quad& q) {
+  Quad s = q;
+  std::sort(s.begin(), s.end());
+  std::uint64_t h = 0x9E3779B97F4A7C15ull;
+  for (std::uint32_t v : s) {
+    h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    h *= 0xBF58476D1CE4E5B9ull;
+  }
+  return h ^ (h >> 31);
+}
+
+/// Whether `hex` meets every front quad it is not glued onto in no more than
+/// a vertex or an edge of both: the hex that later covers that quad from the
+/// cavity would meet `hex` there.
+bool touches_front_properly(const Hex& hex, const QuadMap& front, const std::vector<std::uint32_t>& covered) {
+  for (std::uint32_t q = 0; q < front.size(); ++q) {
+    if (std::find(covered.begin(), covered.end(), q) != covered.end()) continue;
+    const Quad& quad = front.quads[q];
+    std::uint8_t in_quad = 0, in_hex = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 8; ++j)
+        if (quad[static_cast<std::size_t>(i)] == hex[static_cast<std::size_t>(j)]) {
+          in_quad |= static_cast<std::uint8_t>(1u << i);
+          in_hex |= static_cast<std::uint8_t>(1u << j);
+        }
+    const int n = std::popcount(in_quad);
+    const bool quad_edge = in_quad == 0b0011 || in_quad == 0b0110 || in_quad == 0b1100 || in_quad == 0b1001;
+    if (n >= 3 || (n == 2 && !(quad_edge && is_hex_edge(in_hex)))) return false;
+  }
+  return true;
+}
+
+class ShellSpace {
+public:
+  /// What the search keeps open: how to rebuild the front, not the front.
+  struct State {
+    std::uint64_t key = 0;
+    std::int32_t parent = -1;  ///< the expanded state it comes from (-1: the start)
+    quadmap::Gluing gluing{};  ///< the gluing made there
+    std::int32_t last = -1;    ///< arena index of the newest hex placed
+    int hexes = 0;
+    std::uint32_t front_quads = 0;
+    bool closed = false;
+  };
+  /// Fronts up to canonical_limit quads are also merged up to isomorphism,
+  /// when expanded, and looked up in the database.
+  using Key = std::uint64_t;
+  struct KeyHash {
+    std::size_t operator()(std::uint64_t k) const noexcept { return static_cast<std::size_t>(k); }
+  };
+
+  struct Placed {
+    Hex hex;
+    std::int32_t parent;
+    HexSource source;
+  };
+
+  /// A state rebuilt: its front, whose hex is behind each front quad (cavity
+  /// hex h -> h; placed hex a -> cavity size + a), and the placed hexes with
+  /// a corner on the front (the only ones a new hex can touch).
+  struct Front {
+    QuadMap front;
+    std::vector<std::int32_t> owner;
+    std::vector<std::int32_t> near;
+    std::vector<quadmap::Dart> twin;
+    std::vector<int> degree;
+  };
+
+  ShellSpace(const Cavity& cavity, const Database* db, std::size_t max_front)
+      : cavity_(cavity), context_(cavity.hexes), db_(db), max_front_(max_front) {}
+
+  State start() const {
+    State s;
+    for (const Quad& q : cavity_.front.quads) s.key ^= quad_hash(q);
+    s.front_quads = static_cast<std::uint32_t>(cavity_.front.size());
+    s.closed = cavity_.front.quads.empty();
+    return s;
+  }
+
+  Key key(const State& s) const { return s.closed ? 0 : s.key; }
+  double cost(const State& s) const { return s.hexes; }
+  double estimate(const State& s) const { return s.closed ? 0.0 : s.front_quads / 4.0; }
+  /// Every front quad needs a hex, and a hex covers at most six.
+  double lower_bound(const State& s) const { return s.closed ? 0.0 : std::ceil(s.front_quads / 6.0); }
+  bool goal(const State& s) const { return s.closed; }
+
+  template <class Emit>
+  void expand(const State& s, Emit&& emit) {
+    Stopwatch clock;
+    expanded_.push_back(rebuild(s));
+    profile_.rebuild += clock.lap();
+    const auto index = static_cast<std::int32_t>(expanded_.size() - 1);
+    const Front& f = expanded_.back();
+    if (f.front.size() <= canonical_limit) {
+      const auto canon = quadmap::canonical_unoriented(f.front);
+      profile_.canonical += clock.lap();
+      auto [it, fresh] = expanded_codes_.try_emplace(quadmap::CodeHash{}(canon.code), s.hexes);
+      if (!fresh && it->second <= s.hexes) return;  // an isomorphic front was expanded no dearer
+      it->second = s.hexes;
+      close_from_database(s, f, canon, emit);
+    }
+    close_cube(s, f, emit);
+    profile_.database += clock.lap();
+    const QuadsAtVertex at(f.front);
+    std::unordered_set<std::uint64_t> tried;
+    quadmap::GluedHex glued;
+    std::vector<std::uint32_t> covered;
+    for (std::uint32_t q = 0; q < f.front.size(); ++q)
+      for (std::uint8_t sides = 0; sides < 16; ++sides) {
+        if (!quadmap::plan_gluing(f.front, f.twin, f.degree, {q, sides}, glued)) continue;
+        const std::uint32_t quads = s.front_quads + 6 - 2 * static_cast<std::uint32_t>(glued.k);
+        if (quads > max_front_) continue;
+        covered.assign(glued.covered.begin(), glued.covered.begin() + glued.k);
+        std::uint64_t key = s.key;
+        for (std::uint32_t c : covered) key ^= quad_hash(f.front.quads[c]);
+        if (!tried.insert(key).second) continue;  // the same hex from another bottom
+        if (!glued_front_is_proper(f.front, at, glued)) continue;
+        if (!touches_front_properly(glued.hex, f.front, covered) || !fits(glued.hex, f, covered)) continue;
+        for (int a = 0; a < 6 - glued.k; ++a) key ^= quad_hash(glued.added[static_cast<std::size_t>(a)]);
+        State next;
+        next.key = key;
+        next.parent = index;
+        next.gluing = {q, sides};
+        next.last = place(glued.hex, s.last, HexSource::searched);
+        next.hexes = s.hexes + 1;
+        next.front_quads = quads;
+        emit(std::move(next));
+      }
+    profile_.gluing += clock.lap();
+  }
+
+  const SearchProfile& profile() const { return profile_; }
+
+  /// The front of a state (the start, or one a gluing from an expanded state reaches).
+  Front rebuild(const State& s) const {
+    if (s.parent < 0) return with_lookups({cavity_.front, cavity_.owner, {}, {}, {}});
+    const Front& p = expanded_[static_cast<std::size_t>(s.parent)];
+    quadmap::GluedHex glued;
+    quadmap::plan_gluing(p.front, p.twin, p.degree, s.gluing, glued);
+    Front f;
+    f.front = quadmap::after_gluing(p.front, glued);
+    const auto covered_end = glued.covered.cbegin() + glued.k;
+    for (std::uint32_t o = 0; o < p.front.size(); ++o)
+      if (std::find(glued.covered.cbegin(), covered_end, o) == covered_end) f.owner.push_back(p.owner[o]);
+    f.owner.resize(f.front.size(), id_of_placed(s.last));
+    std::vector<std::uint32_t> on_front;
+    for (const Quad& q : f.front.quads) on_front.insert(on_front.end(), q.begin(), q.end());
+    std::sort(on_front.begin(), on_front.end());
+    for (std::int32_t a : p.near)
+      if (std::any_of(arena_[static_cast<std::size_t>(a)].hex.begin(), arena_[static_cast<std::size_t>(a)].hex.end(),
+                      [&](std::uint32_t v) { return std::binary_search(on_front.begin(), on_front.end(), v); }))
+        f.near.push_back(a);
+    f.near.push_back(s.last);
+    return with_lookups(std::move(f));
+  }
+
+  /// Arena indices of the hexes placed on the way to `s`, first placed first.
+  std::vector<std::int32_t> path(const State& s) const {
+    std::vector<std::int32_t> out;
+    for (std::int32_t a = s.last; a >= 0; a = arena_[static_cast<std::size_t>(a)].parent) out.push_back(a);
+    std::reverse(out.begin(), out.end());
+    return out;
+  }
+  const Placed& placed(std::int32_t a) const { return arena_[static_cast<std::size_t>(a)]; }
+
+private:
+  static constexpr std::size_t canonical_limit = 40;
+
+  static Front with_lookups(Front f) {
+    f.twin = quadmap::twins(f.front);
+    f.degree = quadmap::degrees(f.front);
+    return f;
+  }
+
+  std::int32_t id_of_placed(std::int32_t arena_index) const {
+    return static_cast<std::int32_t>(cavity_.hexes.size()) + arena_index;
+  }
+
+  std::int32_t place(const Hex& hex, std::int32_t parent, HexSource source) {
+    arena_.push_back({hex, parent, source});
+    return static_cast<std::int32_t>(arena_.size() - 1);
+  }
+
+  /// Whether `hex`, glued onto the front quads `onto` (indices into
+  /// f.front), meets every hex before it as a valid mesh allows.
+  bool fits(const Hex& hex, const Front& f, const std::vector<std::uint32_t>& onto) const {
+    onto_.clear();
+    for (std::uint32_t q : onto) onto_.push_back(&f.front.quads[q]);
+    checked_.clear();
+    for (std::uint32_t v : hex)
+      for (std::int32_t h : context_.at(v)) {
+        if (std::find(checked_.begin(), checked_.end(), h) != checked_.end()) continue;
+        checked_.push_back(h);
+        if (!meets_as_glued(hex, cavity_.hexes[static_cast<std::size_t>(h)], onto_)) return false;
+      }
+    for (std::int32_t a : f.near)
+      if (!meets_as_glued(hex, arena_[static_cast<std::size_t>(a)].hex, onto_)) return false;
+    return true;
+  }
+
+  template <class Emit>
+  void close_cube(const State& s, const Front& f, Emit& emit) {
+    Hex hex;
+    if (!quadmap::fill_cube(f.front, f.twin, hex)) return;
+    std::vector<std::uint32_t> all(f.front.size());
+    for (std::uint32_t q = 0; q < all.size(); ++q) all[q] = q;
+    if (!fits(hex, f, all)) return;
+    State done;
+    done.closed = true;
+    done.hexes = s.hexes + 1;
+    done.last = place(hex, s.last, HexSource::searched);
+    emit(std::move(done));
+  }
+
+  /// The database's mesh for the front, placed by each automorphism in turn
+  /// until one fits the hexes around it.
+  template <class Emit>
+  void close_from_database(const State& s, const Front& f, const quadmap::Canonical& canon, Emit& emit) {
+    const Database::Entry* entry = db_ ? db_->find(canon.code) : nullptr;
+    if (!entry) return;
+    auto [cached, fresh] = templates_.try_emplace(entry);
+    if (fresh) cached->second = mesh_of(*entry);
+    const std::vector<Hex>& entry_hexes = cached->second;
+    const std::uint32_t boundary_vertices = quadmap::map_of_code(entry->code).vertex_bound;
+    const QuadMap read = canon.mirrored ? quadmap::mirrored(f.front) : f.front;
+    const auto twin = quadmap::twins(read);
+    for (quadmap::Dart start : canon.starts) {
+      const auto label = quadmap::labels_from(read, twin, start);
+      std::vector<std::uint32_t> vertex_of(boundary_vertices, quadmap::no_vertex);
+      for (std::uint32_t v = 0; v < label.size(); ++v)
+        if (label[v] != quadmap::no_vertex) vertex_of[label[v]] = v;
+      std::vector<Hex> hexes;
+      for (Hex h : entry_hexes) {
+        for (auto& v : h) v = v < boundary_vertices ? vertex_of[v] : f.front.vertex_bound + (v - boundary_vertices);
+        hexes.push_back(canon.mirrored ? mirror_hex(h) : h);
+      }
+      std::int32_t last = s.last;
+      const std::size_t mark = arena_.size();
+      bool ok = true;
+      // Each of the mesh's hexes goes onto the whole front: every front quad is covered.
+      std::vector<std::uint32_t> all(f.front.size());
+      for (std::uint32_t q = 0; q < all.size(); ++q) all[q] = q;
+      for (const Hex& h : hexes) {
+        if (!fits(h, f, all)) {
+          ok = false;
+          break;
+        }
+        last = place(h, last, HexSource::database);
+      }
+      if (!ok) {
+        arena_.resize(mark);
+        continue;
+      }
+      State done;
+      done.closed = true;
+      done.hexes = s.hexes + static_cast<int>(hexes.size());
+      done.last = last;
+      emit(std::move(done));
+      return;
+    }
+  }
+
+  const Cavity& cavity_;
+  HexesAtVertex context_;
+  const Database* db_;
+  std::size_t max_front_;
+  std::vector<Placed> arena_;
+  std::vector<Front> expanded_;
+  std::unordered_map<std::uint64_t, int> expanded_codes_;  ///< canonical code hash -> fewest hexes expanded at
+  std::unordered_map<const Database::Entry*, std::vector<Hex>> templates_;  ///< replayed entries
+  mutable std::vector<std::int32_t> checked_;
+  mutable std::vector<const Quad*> onto_;
+  SearchProfile profile_;
+};
+
+}  // namespace
+
+ClosureResult close_cavity(const Cavity& cavity, const Database* db, const ClosureOptions& options) {
+  ShellSpace space(cavity, db, cavity.front.size() + static_cast<std::size_t>(std::max(0, options.max_growth)));
+  auto outcome = engine::best_first_search(space, space.start(), options.limits);
+  ClosureResult r;
+  r.stats = outcome.stats;
+  r.profile = space.profile();
+  const ShellSpace::State* end = outcome.goal ? &*outcome.goal : outcome.closest ? &*outcome.closest : nullptr;
+  r.closed = outcome.goal.has_value();
+  std::uint32_t bound = cavity.front.vertex_bound;
+  const auto context = static_cast<std::int32_t>(cavity.hexes.size());
+  std::vector<std::int32_t> position_of;  // arena index -> place in r.hexes
+  if (end)
+    for (std::int32_t a : space.path(*end)) {
+      const auto& p = space.placed(a);
+      if (position_of.size() <= static_cast<std::size_t>(a)) position_of.resize(static_cast<std::size_t>(a) + 1, -1);
+      position_of[static_cast<std::size_t>(a)] = static_cast<std::int32_t>(r.hexes.size());
+      r.hexes.push_back(p.hex);
+      r.source.push_back(p.source);
+      for (std::uint32_t v : p.hex) bound = std::max(bound, v + 1);
+    }
+  r.vertex_bound = bound;
+  if (!r.closed && end) {
+    const ShellSpace::Front f = space.rebuild(*end);
+    r.left.front = f.front;
+    r.left.front.vertex_bound = bound;
+    for (std::int32_t o : f.owner)
+      r.left.owner.push_back(o < context ? o : context + position_of[static_cast<std::size_t>(o - context)]);
+    r.left.hexes = cavity.hexes;
+    r.left.hexes.insert(r.left.hexes.end(), r.hexes.begin(), r.hexes.end());
+  }
+  return r;
+}
+
+}  // namespace loom::closure

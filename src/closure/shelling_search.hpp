@@ -1,0 +1,54 @@
+#pragma once
+// Closing a cavity by search (Verhetsel, Pellerin & Remacle 2019): hexes are
+// glued onto the front one at a time (hex_glue.hpp) until what is left is a
+// cube or a boundary the database holds, whose mesh then goes in whole.
+// Anytime weighted best-first search (engine/search.hpp) over fronts: cost =
+// hexes placed, estimate = a quarter of the front's quads (a glued hex
+// removes at most four), lower bound = a sixth of them; fronts merged by
+// canonical code. The fewest hexes found within the budget win. Deterministic.
+#include <cstdint>
+#include <vector>
+
+#include "engine/search.hpp"
+#include "src/closure/cavity.hpp"
+#include "src/closure/database.hpp"
+
+namespace loom::closure {
+
+/// Where a hex of a closed mesh came from (reported per hex, docs/closure.md).
+enum class HexSource : std::uint8_t { woven, searched, database, filled, pillow };
+const char* source_name(HexSource s);
+
+struct ClosureOptions {
+  /// Budgets are in expansions, so that a result never depends on the
+  /// machine's speed; the seconds are only a guard against a runaway search.
+  engine::SearchLimits limits{4'000, 1'000'000, 600.0, 3.0};
+  /// Fronts larger than the starting one by more than this are not explored.
+  int max_growth = 8;
+};
+
+/// Where a search's time went, in seconds.
+struct SearchProfile {
+  double rebuild = 0;    ///< rebuilding the fronts of the states expanded
+  double canonical = 0;  ///< canonical codes of small fronts (merging, database)
+  double database = 0;   ///< placing database meshes and cubes
+  double gluing = 0;     ///< trying every gluing and its checks
+};
+
+struct ClosureResult {
+  bool closed = false;
+  /// The hexes placed, in order; their new vertices are numbered from the
+  /// cavity's vertex_bound on. When not closed: those of the closest state.
+  std::vector<Hex> hexes;
+  std::vector<HexSource> source;  ///< per hex: searched or database
+  std::uint32_t vertex_bound = 0;  ///< every id used is below it
+  /// When not closed: the cavity left at the state with the smallest front
+  /// reached (its hexes: the cavity's, then `hexes`).
+  Cavity left;
+  engine::SearchStats stats;
+  SearchProfile profile;
+};
+
+ClosureResult close_cavity(const Cavity& cavity, const Database* db, const ClosureOptions& options);
+
+}  // namespace loom::closure

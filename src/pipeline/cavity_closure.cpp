@@ -1,0 +1,167 @@
+#include "src/pipeline/cavity_closure.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+
+#include "src/closure/cavities.hpp"
+#include "src/fill/fill.hpp"
+#include "src/geometry/boundary_layer.hpp"
+#include "src/util/error.hpp"
+
+namespace loom::pipeline {
+
+using closure::HexSource;
+
+namespace {
+
+struct Builder {
+  ClosedMesh out;
+  std::vector<bool> placed;  ///< per point: has a position
+
+  std::uint32_t bound() const { return static_cast<std::uint32_t>(out.mesh.points.size()); }
+  void reserve_points(std::uint32_t n) {
+    if (n > out.mesh.points.size()) {
+      out.mesh.points.resize(n, Vec3{0, 0, 0});
+      placed.resize(n, false);
+    }
+  }
+  void add(const Hex& h, HexSource s) {
+    for (std::uint32_t v : h) reserve_points(v + 1);
+    out.mesh.hexes.push_back(h);
+    out.source.push_back(s);
+  }
+
+  /// The hexes already in the mesh with a corner on `cavity`'s front that
+  /// `cavity` does not list yet (hexes another cavity's closure added).
+  void add_neighbours_to(closure::Cavity& cavity, std::size_t first_added) const {
+    std::vector<std::uint32_t> vertices;
+    for (const Quad& q : cavity.front.quads) vertices.insert(vertices.end(), q.begin(), q.end());
+    std::sort(vertices.begin(), vertices.end());
+    for (std::size_t h = first_added; h < out.mesh.hexes.size(); ++h) {
+      const Hex& hex = out.mesh.hexes[h];
+      if (std::any_of(hex.begin(), hex.end(),
+                      [&](std::uint32_t v) { return std::binary_search(vertices.begin(), vertices.end(), v); }))
+        cavity.hexes.push_back(hex);
+    }
+  }
+
+  /// Fills the front of `left` constructively; its new nodes get the fill's first positions.
+  void fill(const closure::Cavity& left, const std::vector<fill::Cap>& caps) {
+    std::map<std::uint32_t, std::uint32_t> local;
+    std::vector<std::uint32_t> global;
+    QuadSurface s;
+    for (const Quad& q : left.front.quads) {
+      Quad l;
+      for (int i = 0; i < 4; ++i) {
+        auto [it, fresh] = local.emplace(q[i], static_cast<std::uint32_t>(global.size()));
+        if (fresh) {
+          global.push_back(q[i]);
+          s.points.push_back(out.mesh.points[q[i]]);
+        }
+        l[i] = it->second;
+      }
+      s.quads.push_back(l);
+    }
+    fill::FilledMesh f = fill::fill_constructively(s, caps);
+    const std::size_t first = out.mesh.hexes.size();
+    for (std::size_t p = global.size(); p < f.mesh.points.size(); ++p) {
+      global.push_back(bound());
+      reserve_points(bound() + 1);
+      out.mesh.points.back() = f.mesh.points[p];
+      placed.back() = true;
+    }
+    for (const Hex& h : f.mesh.hexes) {
+      Hex g;
+      for (int i = 0; i < 8; ++i) g[i] = global[h[i]];
+      add(g, HexSource::filled);
+    }
+    out.report.filled += f.mesh.hexes.size();
+    std::vector<bool> fixed(bound(), false);
+    const auto layer = geometry::pillow_region(out.mesh, first, out.mesh.hexes.size(), fixed);
+    out.source.resize(out.mesh.hexes.size(), HexSource::pillow);
+    placed.resize(bound(), true);
+    out.report.pillowed += layer.hexes_added;
+  }
+
+  /// Positions for the nodes the search and the database made: the mean of
+  /// their placed hex-edge neighbours, spreading inwards. Placement (the
+  /// harmonic start) decides the final ones; this only avoids a degenerate start.
+  void estimate_positions() {
+    std::vector<std::vector<std::uint32_t>> next(bound());
+    static constexpr int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                         {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    for (const Hex& h : out.mesh.hexes)
+      for (const auto& e : edges) {
+        next[h[e[0]]].push_back(h[e[1]]);
+        next[h[e[1]]].push_back(h[e[0]]);
+      }
+    for (bool progress = true; progress;) {
+      progress = false;
+      for (std::uint32_t v = 0; v < bound(); ++v) {
+        if (placed[v]) continue;
+        Vec3 sum{0, 0, 0};
+        int n = 0;
+        for (std::uint32_t w : next[v])
+          if (placed[w]) {
+            sum = sum + out.mesh.points[w];
+            ++n;
+          }
+        if (n == 0) continue;
+        out.mesh.points[v] = (1.0 / n) * sum;
+        placed[v] = true;
+        progress = true;
+      }
+    }
+  }
+};
+
+}  // namespace
+
+ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, const closure::Database* db,
+                          const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  closure::Cavities cavities = closure::cavities_left(surface, woven.hexes);
+  Builder b;
+  b.out.mesh.points = woven.points;
+  b.placed.assign(woven.points.size(), true);
+  b.reserve_points(cavities.vertex_bound);
+  ClosureReport& report = b.out.report;
+  report.woven = cavities.kept.size();
+  report.peeled = cavities.peeled;
+  report.cavities = cavities.pieces.size();
+  for (const Hex& h : cavities.kept) b.add(h, HexSource::woven);
+  const std::size_t first_added = b.out.mesh.hexes.size();
+  for (closure::Cavity& cavity : cavities.pieces) {
+    report.front_quads += cavity.front.size();
+    b.add_neighbours_to(cavity, first_added);
+    cavity.front.vertex_bound = b.bound();
+    const closure::ClosureResult r = closure::close_cavity(cavity, db, options);
+    report.search.expanded += r.stats.expanded;
+    report.search.generated += r.stats.generated;
+    report.search.seconds += r.stats.seconds;
+    report.search.peak_open = std::max(report.search.peak_open, r.stats.peak_open);
+    for (std::size_t i = 0; i < r.hexes.size(); ++i) {
+      b.add(r.hexes[i], r.source[i]);
+      (r.source[i] == HexSource::database ? report.database : report.searched) += 1;
+    }
+    b.reserve_points(r.vertex_bound);
+    if (!r.closed) {
+      if (caps.empty()) {
+        b.out.complete = false;
+        continue;
+      }
+      ++report.filled_cavities;
+      report.fill_quads += r.left.front.size();
+      b.estimate_positions();
+      b.fill(r.left, caps);
+    }
+  }
+  b.estimate_positions();
+  b.out.on_boundary.assign(b.bound(), false);
+  for (std::size_t p = 0; p < surface.points.size(); ++p) b.out.on_boundary[p] = true;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(b.out);
+}
+
+}  // namespace loom::pipeline

@@ -1,0 +1,50 @@
+#pragma once
+// Closing what a weave leaves (docs/closure.md): the woven hexes are kept as
+// far as they can be part of a valid mesh (closure/cavities.hpp), each cavity
+// between them and the surface is closed by search and the database
+// (closure/shelling_search.hpp), and where the search stops short, the front
+// it reached is filled constructively (fill/fill.hpp). Every woven hex kept
+// stays; the whole-surface fill is not used here.
+#include <cstddef>
+#include <vector>
+
+#include "src/closure/database.hpp"
+#include "src/closure/shelling_search.hpp"
+#include "src/fill/cap.hpp"
+#include "src/mesh/hex_mesh.hpp"
+#include "src/mesh/quad_surface.hpp"
+
+namespace loom::pipeline {
+
+struct ClosureReport {
+  std::size_t woven = 0;        ///< woven hexes kept
+  std::size_t peeled = 0;       ///< woven hexes removed to leave proper fronts
+  std::size_t cavities = 0;     ///< pieces of the front
+  std::size_t front_quads = 0;  ///< quads of those fronts, before the search
+  std::size_t searched = 0, database = 0, filled = 0;  ///< hexes added, by source
+  std::size_t pillowed = 0;         ///< hexes of the pillows round filled cavities
+  std::size_t filled_cavities = 0;  ///< cavities the search left to the fill
+  std::size_t fill_quads = 0;       ///< quads of the fronts the fill got
+  engine::SearchStats search;       ///< summed over the cavities
+  double seconds = 0;
+};
+
+struct ClosedMesh {
+  /// Every cavity closed; false when one was left and there were no caps to fill it.
+  bool complete = true;
+  HexMesh mesh;  ///< the surface's points first, in order
+  std::vector<closure::HexSource> source;  ///< per hex
+  std::vector<bool> on_boundary;           ///< per point: a surface node
+  ClosureReport report;
+};
+
+/// `woven`: hexes over points whose first surface.points.size() are the
+/// surface's (stc::woven_over_surface). `db` may be null; with no `caps`, a
+/// cavity the search does not close stays open (ClosedMesh::complete false).
+/// A filled cavity is pillowed (geometry::pillow_region), so that its fill
+/// meets the hexes round it in single faces, edges or vertices. Throws
+/// InputError when a cavity cannot be filled (the fill's message).
+ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, const closure::Database* db,
+                          const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options);
+
+}  // namespace loom::pipeline

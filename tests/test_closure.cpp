@@ -1,0 +1,165 @@
+// Closure: the database of small hexahedrizations, the search over hex
+// gluings, the cavities a weave leaves and their closure.
+#include <doctest/doctest.h>
+
+#include <random>
+
+#include "engine/rule_compiler.hpp"
+#include "src/check/validity.hpp"
+#include "src/closure/cavities.hpp"
+#include "src/closure/database.hpp"
+#include "src/closure/shelling_search.hpp"
+#include "src/fill/fill.hpp"
+#include "src/gen/generators.hpp"
+#include "src/pipeline/cavity_closure.hpp"
+#include "src/stc/build.hpp"
+#include "src/stc/primal.hpp"
+#include "src/util/error.hpp"
+#include "src/weave/weave.hpp"
+#include "support.hpp"
+
+using namespace loom;
+using namespace loom::closure;
+
+namespace {
+
+/// Criteria 1-6 of `hexes` against `surface` (its points first, the rest at random).
+ValidityReport check_against(const QuadSurface& surface, const std::vector<Hex>& hexes) {
+  HexMesh mesh{surface.points, hexes};
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  for (const Hex& h : hexes)
+    for (std::uint32_t v : h)
+      while (mesh.points.size() <= v) mesh.points.push_back({u(rng), u(rng), u(rng)});
+  return check_hex_mesh(mesh, &surface);
+}
+
+/// A surface for a quad map: its vertices at random.
+QuadSurface surface_of(const quadmap::QuadMap& m) {
+  QuadSurface s{{}, m.quads};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (std::uint32_t v = 0; v < m.vertex_bound; ++v) s.points.push_back({u(rng), u(rng), u(rng)});
+  return s;
+}
+
+const Database& shipped_database() {
+  static const Database db = Database::load(database_file(weave::default_rules_dir()));
+  return db;
+}
+
+}  // namespace
+
+TEST_CASE("the outward shelling finds as many meshes of 1 to 6 hexes as Verhetsel et al. list") {
+  // "Finding hexahedrizations for small quadrangulations of the sphere"
+  // (2019): 1, 2, 5, 17, 74, 489 meshes of at most 1..6 hexes.
+  const Database db = Database::build({6, 40, 40});
+  std::size_t by_size[7] = {};
+  for (const auto& e : db.entries()) ++by_size[e.hexes()];
+  std::size_t total = 0;
+  const std::size_t listed[7] = {0, 1, 2, 5, 17, 74, 489};
+  for (int n = 1; n <= 6; ++n) {
+    total += by_size[n];
+    CHECK(total == listed[n]);
+  }
+  // Every entry is a valid mesh of its boundary.
+  for (const auto& e : db.entries()) {
+    const auto hexes = mesh_of(e);
+    REQUIRE(hexes.size() == e.hexes());
+    CHECK(check_against(surface_of(quadmap::map_of_code(e.code)), hexes).combinatorial_valid());
+  }
+}
+
+TEST_CASE("the shipped database: every entry replays to a valid mesh, and a rebuild writes the same file") {
+  const Database& db = shipped_database();
+  REQUIRE(db.size() > 1000);
+  std::size_t invalid = 0;
+  for (const auto& e : db.entries()) {
+    const auto report = check_against(surface_of(quadmap::map_of_code(e.code)), mesh_of(e));
+    invalid += !report.combinatorial_valid();
+  }
+  CHECK(invalid == 0);
+  // The file is what Database::save writes for it.
+  test::ScratchDir dir("db");
+  db.save(dir / "again.txt");
+  CHECK(test::slurp(dir / "again.txt") == test::slurp(database_file(weave::default_rules_dir())));
+}
+
+TEST_CASE("a broken database file is refused naming its line") {
+  test::ScratchDir dir("baddb");
+  const std::string good = "entry 6 1 | 3 3 3 3 0 1 2 3 1 0 4 5 2 1 5 6 3 2 6 7 0 3 7 4 5 4 7 6 |\n";
+  for (const auto& [text, what] :
+       std::vector<std::pair<std::string, std::string>>{{"entri 6 1 |", "line 1: expected 'entry'"},
+                                                        {good + "entry 6 2 | 3 3 3 3 0 1 2 3 1 0 4 5 2 1 5 6 3 2 6 7 0 3 7 4 5 4 7 6 | x\n",
+                                                         "line 2: 'x' is not a gluing"},
+                                                        {good + good, "line 2: a boundary listed twice"}}) {
+    test::spit(dir / "db.txt", text);
+    try {
+      Database::load(dir / "db.txt");
+      FAIL("accepted: " << text);
+    } catch (const InputError& e) {
+      CHECK(std::string(e.what()).find(what) != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("the search closes small surfaces with valid meshes, the spindle with the database") {
+  ClosureOptions options;
+  for (const auto& [name, surface, at_most] :
+       std::vector<std::tuple<std::string, QuadSurface, std::size_t>>{
+           {"cube", gen::box(1, 1, 1), 1}, {"box 2 1 1", gen::box(2, 1, 1), 2}, {"tet4", gen::tet4(), 4}}) {
+    CAPTURE(name);
+    const auto r = close_cavity(surface_cavity(quadmap::from_surface(surface)), nullptr, options);
+    REQUIRE(r.closed);
+    CHECK(r.hexes.size() <= at_most);
+    CHECK(check_against(surface, r.hexes).combinatorial_valid());
+  }
+  const QuadSurface spindle = gen::spindle();
+  const auto without = close_cavity(surface_cavity(quadmap::from_surface(spindle)), nullptr, options);
+  CHECK_FALSE(without.closed);
+  const auto with = close_cavity(surface_cavity(quadmap::from_surface(spindle)), &shipped_database(), options);
+  REQUIRE(with.closed);
+  CHECK(with.hexes.size() <= 60);
+  CHECK(check_against(spindle, with.hexes).combinatorial_valid());
+  CHECK(std::count(with.source.begin(), with.source.end(), HexSource::database) > 0);
+}
+
+TEST_CASE("the woven hexes of a weave cut short are kept, and the cavity they leave is closed") {
+  const QuadSurface box = gen::box(3, 3, 3);
+  auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  stc::Stc s = stc::build_from_surface(box);
+  weave::WeaveOptions options;
+  options.max_steps = 30;
+  const auto woven = weave::weave(s, rules, options);
+  REQUIRE_FALSE(woven.closed);
+  const HexMesh partial = stc::woven_over_surface(s, box.points.size());
+  REQUIRE(partial.hexes.size() > 5);
+  const Cavities c = cavities_left(box, partial.hexes);
+  CHECK(c.peeled == 0);
+  CHECK(c.kept.size() == partial.hexes.size());
+  REQUIRE(c.pieces.size() == 1);
+  CHECK(why_not_closable(c.pieces[0]) == "");
+  const auto closed = pipeline::close_cavities(box, partial, &shipped_database(),
+                                               fill::load_caps(fill::default_caps_dir()), {});
+  CHECK(closed.complete);
+  CHECK(closed.report.woven == partial.hexes.size());
+  CHECK(check_hex_mesh(closed.mesh, &box).combinatorial_valid());
+}
+
+TEST_CASE("woven hexes that could not be part of a valid mesh are peeled off") {
+  const QuadSurface cube = gen::box(1, 1, 1);
+  auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  stc::Stc s = stc::build_from_surface(cube);
+  REQUIRE(weave::weave(s, rules, {}).closed);
+  HexMesh woven = stc::woven_over_surface(s, cube.points.size());
+  REQUIRE(woven.hexes.size() == 1);
+  CHECK(cavities_left(cube, woven.hexes).pieces.empty());
+  // A second hex with six corners of the first: the two would share two faces.
+  const Hex h = woven.hexes[0];
+  woven.hexes.push_back({h[0], h[1], h[2], h[3], h[4], h[5], 8, 9});
+  const Cavities c = cavities_left(cube, woven.hexes);
+  CHECK(c.peeled == 1);
+  REQUIRE(c.kept.size() == 1);
+  CHECK(c.kept[0] == h);
+  CHECK(c.pieces.empty());
+}
