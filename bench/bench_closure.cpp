@@ -223,7 +223,7 @@ int main(int argc, char** argv) {
     const std::size_t count = quadmap::three_connected_quadrangulations(f).size();
     for (std::size_t i = 0; i < count; ++i)
       inputs.push_back([f, i] {
-        return Input{fmt::format("quadrangulation {} {}", f, i), fmt::format("3-connected, {} quads", f),
+        return Input{fmt::format("quadrangulation {} {}", f, i), fmt::format("3-connected {} quads", f),
                      gen::quadrangulation(f, static_cast<int>(i))};
       });
   }

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -46,6 +47,26 @@ TEST_CASE("every hex format round-trips points and hexes exactly") {
     CHECK(back.points == mesh.points);
     CHECK(back.hexes == mesh.hexes);
   }
+}
+
+TEST_CASE("cell fields are written in every format, and the mesh still reads back the same") {
+  test::ScratchDir dir("hex-fields");
+  const HexMesh mesh = two_hexes();
+  const std::map<std::string, std::vector<std::string>> marks{
+      {".vtk", {"CELL_DATA 2", "SCALARS source int 1", "LOOKUP_TABLE default\n3\n-1\n"}},
+      {".vtu", {"<CellData Scalars=\"source\">", "Name=\"source\"", "          3\n          -1\n"}},
+      {".msh", {"$ElementData\n1\n\"source\"\n", "1 3\n2 -1\n$EndElementData"}}};
+  for (const auto& ext : hex_extensions) {
+    CAPTURE(ext);
+    write_hex_mesh(dir / ("m" + ext), mesh, {{"source", {3, -1}}});
+    const std::string text = slurp(dir / ("m" + ext));
+    for (const auto& mark : marks.at(ext)) CHECK(text.find(mark) != std::string::npos);
+    HexMesh back = read_hex_mesh(dir / ("m" + ext));
+    CHECK(back.points == mesh.points);
+    CHECK(back.hexes == mesh.hexes);
+  }
+  CHECK_THROWS_AS(write_hex_mesh(dir / "bad.vtk", mesh, {{"source", {1}}}), std::invalid_argument);
+  CHECK_FALSE(fs::exists(dir / "bad.vtk"));
 }
 
 TEST_CASE("an empty hex mesh round-trips in every format") {

@@ -99,7 +99,7 @@ nlohmann::json report_json(const Options& o, const loom::pipeline::MeshingResult
                  loom::closure::HexSource::filled, loom::closure::HexSource::pillow})
     sources[loom::closure::source_name(s)] = std::count(r.source.begin(), r.source.end(), s);
   j["hex_sources"] = sources;
-  if (r.made_by == "closed" || !r.closure_failure.empty()) {
+  if (r.made_by == "closed" || r.made_by == "searched" || !r.closure_failure.empty()) {
     const auto& c = r.closure;
     j["closure"] = {{"woven_kept", c.woven}, {"woven_peeled", c.peeled}, {"cavities", c.cavities},
                     {"front_quads", c.front_quads}, {"searched", c.searched}, {"database", c.database},
@@ -208,7 +208,10 @@ int run(const Options& o) {
     std::cerr << "loom: weave closed but the result is not a valid hex mesh: " << why << after << "; nothing written\n";
     return 1;
   }
-  loom::write_hex_mesh(o.output, *result.mesh);
+  // Where each hex came from, as a cell field (0 woven, 1 searched, 2 database, 3 filled, 4 pillow).
+  loom::CellField source{"source", {}};
+  for (auto s : result.source) source.values.push_back(static_cast<std::int32_t>(s));
+  loom::write_hex_mesh(o.output, *result.mesh, {source});
   const auto& q = result.check->quality;
   const std::size_t hexes = result.mesh->hexes.size();
   auto count = [&](loom::closure::HexSource s) { return std::count(result.source.begin(), result.source.end(), s); };
@@ -235,10 +238,11 @@ int run(const Options& o) {
                              result.closure.cavities, result.closure.cavities == 1 ? "y" : "ies",
                              result.closure.front_quads, layer, quality);
   else if (result.made_by == "searched")
-    std::cout << fmt::format("searched: {} hexes = {} searched + {} from the database, from the surface itself, fewer "
-                             "than the weave gave{}{}; {}\n",
-                             hexes, count(HexSource::searched), count(HexSource::database),
-                             result.weave.closed ? fmt::format(" ({} hexes)", result.stc.hexes()) : " (it did not close)",
+    std::cout << fmt::format("searched: {} hexes = {} searched + {} from the database + {} filled + {} pillow, from the "
+                             "surface itself, fewer than the weave and its cavities gave{}{}; {}\n",
+                             hexes, count(HexSource::searched), count(HexSource::database), count(HexSource::filled),
+                             count(HexSource::pillow),
+                             result.weave.closed ? fmt::format(" (the weave: {} hexes)", result.stc.hexes()) : "",
                              layer, quality);
   else
     std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}{}; {}\n", hexes, hexes == 1 ? "" : "es",

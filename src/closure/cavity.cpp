@@ -53,6 +53,11 @@ std::pair<std::uint32_t, std::uint32_t> unordered(std::uint32_t a, std::uint32_t
 
 /// Whether quads `q` and `p` (distinct) are compatible in a proper map.
 bool compatible(const Quad& q, const Quad& p) {
+  // Every conflict needs two shared corners; most neighbours share one.
+  int shared = 0;
+  for (std::uint32_t a : q)
+    for (std::uint32_t b : p) shared += a == b;
+  if (shared < 2) return true;
   const std::pair<std::uint32_t, std::uint32_t> dq[2] = {unordered(q[0], q[2]), unordered(q[1], q[3])};
   const std::pair<std::uint32_t, std::uint32_t> dp[2] = {unordered(p[0], p[2]), unordered(p[1], p[3])};
   for (int i = 0; i < 4; ++i) {

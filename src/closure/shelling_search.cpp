@@ -61,23 +61,26 @@ std::uint64_t quad_hash(const Quad& q) {
 
 /// Whether `hex` meets every front quad it is not glued onto in no more than
 /// a vertex or an edge of both: the hex that later covers that quad from the
-/// cavity would meet `hex` there.
-bool touches_front_properly(const Hex& hex, const QuadMap& front, const std::vector<std::uint32_t>& covered) {
-  for (std::uint32_t q = 0; q < front.size(); ++q) {
-    if (std::find(covered.begin(), covered.end(), q) != covered.end()) continue;
-    const Quad& quad = front.quads[q];
-    std::uint8_t in_quad = 0, in_hex = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 8; ++j)
-        if (quad[static_cast<std::size_t>(i)] == hex[static_cast<std::size_t>(j)]) {
-          in_quad |= static_cast<std::uint8_t>(1u << i);
-          in_hex |= static_cast<std::uint8_t>(1u << j);
-        }
-    const int n = std::popcount(in_quad);
-    const bool quad_edge = in_quad == 0b0011 || in_quad == 0b0110 || in_quad == 0b1100 || in_quad == 0b1001;
-    if (n >= 3 || (n == 2 && !(quad_edge && is_hex_edge(in_hex)))) return false;
-  }
-  return true;
+/// cavity would meet `hex` there. Only quads at the hex's corners can fail.
+bool touches_front_properly(const Hex& hex, const QuadMap& front, const QuadsAtVertex& at,
+                            const std::vector<std::uint32_t>& covered) {
+  bool ok = true;
+  for (std::uint32_t v : hex)
+    at.each(v, [&](std::uint32_t q) {
+      if (!ok || std::find(covered.begin(), covered.end(), q) != covered.end()) return;
+      const Quad& quad = front.quads[q];
+      std::uint8_t in_quad = 0, in_hex = 0;
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 8; ++j)
+          if (quad[static_cast<std::size_t>(i)] == hex[static_cast<std::size_t>(j)]) {
+            in_quad |= static_cast<std::uint8_t>(1u << i);
+            in_hex |= static_cast<std::uint8_t>(1u << j);
+          }
+      const int n = std::popcount(in_quad);
+      const bool quad_edge = in_quad == 0b0011 || in_quad == 0b0110 || in_quad == 0b1100 || in_quad == 0b1001;
+      if (n >= 3 || (n == 2 && !(quad_edge && is_hex_edge(in_hex)))) ok = false;
+    });
+  return ok;
 }
 
 class ShellSpace {
@@ -152,30 +155,43 @@ public:
     close_cube(s, f, emit);
     profile_.database += clock.lap();
     const QuadsAtVertex at(f.front);
+    const NearAtVertex near_at(f.near, arena_);
     std::unordered_set<std::uint64_t> tried;
     quadmap::GluedHex glued;
     std::vector<std::uint32_t> covered;
-    for (std::uint32_t q = 0; q < f.front.size(); ++q)
-      for (std::uint8_t sides = 0; sides < 16; ++sides) {
-        if (!quadmap::plan_gluing(f.front, f.twin, f.degree, {q, sides}, glued)) continue;
-        const std::uint32_t quads = s.front_quads + 6 - 2 * static_cast<std::uint32_t>(glued.k);
-        if (quads > max_front_) continue;
-        covered.assign(glued.covered.begin(), glued.covered.begin() + glued.k);
-        std::uint64_t key = s.key;
-        for (std::uint32_t c : covered) key ^= quad_hash(f.front.quads[c]);
-        if (!tried.insert(key).second) continue;  // the same hex from another bottom
-        if (!glued_front_is_proper(f.front, at, glued)) continue;
-        if (!touches_front_properly(glued.hex, f.front, covered) || !fits(glued.hex, f, covered)) continue;
-        for (int a = 0; a < 6 - glued.k; ++a) key ^= quad_hash(glued.added[static_cast<std::size_t>(a)]);
-        State next;
-        next.key = key;
-        next.parent = index;
-        next.gluing = {q, sides};
-        next.last = place(glued.hex, s.last, HexSource::searched);
-        next.hexes = s.hexes + 1;
-        next.front_quads = quads;
-        emit(std::move(next));
-      }
+    // On a large front, gluings that grow it (k = 1, 2) are tried only when
+    // no other applies: there are hundreds of them, they are rarely the way,
+    // and generating them all would be most of the work.
+    const int least_k = f.front.size() > kLargeFront ? 3 : 1;
+    std::size_t emitted = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+      if (pass == 1 && (least_k == 1 || emitted > 0)) break;
+      const int pass_least_k = pass == 0 ? least_k : 1;
+      for (std::uint32_t q = 0; q < f.front.size(); ++q)
+        for (std::uint8_t sides = 0; sides < 16; ++sides) {
+          if (std::popcount(static_cast<unsigned>(sides)) + 1 < pass_least_k) continue;
+          if (!quadmap::plan_gluing(f.front, f.twin, f.degree, {q, sides}, glued)) continue;
+          if (pass == 1 && glued.k >= least_k) continue;  // tried in the first pass
+          const std::uint32_t quads = s.front_quads + 6 - 2 * static_cast<std::uint32_t>(glued.k);
+          if (quads > max_front_) continue;
+          covered.assign(glued.covered.begin(), glued.covered.begin() + glued.k);
+          std::uint64_t key = s.key;
+          for (std::uint32_t c : covered) key ^= quad_hash(f.front.quads[c]);
+          if (!tried.insert(key).second) continue;  // the same hex from another bottom
+          if (!glued_front_is_proper(f.front, at, glued)) continue;
+          if (!touches_front_properly(glued.hex, f.front, at, covered) || !fits(glued.hex, f, near_at, covered)) continue;
+          for (int a = 0; a < 6 - glued.k; ++a) key ^= quad_hash(glued.added[static_cast<std::size_t>(a)]);
+          State next;
+          next.key = key;
+          next.parent = index;
+          next.gluing = {q, sides};
+          next.last = place(glued.hex, s.last, HexSource::searched);
+          next.hexes = s.hexes + 1;
+          next.front_quads = quads;
+          emit(std::move(next));
+          ++emitted;
+        }
+    }
     profile_.gluing += clock.lap();
   }
 
@@ -215,6 +231,7 @@ public:
 
 private:
   static constexpr std::size_t canonical_limit = 40;
+  static constexpr std::size_t kLargeFront = 64;
 
   static Front with_lookups(Front f) {
     f.twin = quadmap::twins(f.front);
@@ -231,20 +248,47 @@ private:
     return static_cast<std::int32_t>(arena_.size() - 1);
   }
 
+  /// The near hexes (arena indices) at each vertex, for one expansion.
+  class NearAtVertex {
+  public:
+    NearAtVertex(const std::vector<std::int32_t>& near, const std::vector<Placed>& arena) {
+      for (std::int32_t a : near)
+        for (std::uint32_t v : arena[static_cast<std::size_t>(a)].hex) pairs_.emplace_back(v, a);
+      std::sort(pairs_.begin(), pairs_.end());
+    }
+    template <class F>
+    void each(std::uint32_t v, F&& f) const {
+      auto it = std::lower_bound(pairs_.begin(), pairs_.end(), std::pair<std::uint32_t, std::int32_t>{v, INT32_MIN});
+      for (; it != pairs_.end() && it->first == v; ++it) f(it->second);
+    }
+
+  private:
+    std::vector<std::pair<std::uint32_t, std::int32_t>> pairs_;
+  };
+
   /// Whether `hex`, glued onto the front quads `onto` (indices into
-  /// f.front), meets every hex before it as a valid mesh allows.
-  bool fits(const Hex& hex, const Front& f, const std::vector<std::uint32_t>& onto) const {
+  /// f.front), meets every hex before it as a valid mesh allows. Only hexes
+  /// sharing a corner with it can fail: the cavity's (context_) and the
+  /// placed ones near the front (`near`).
+  bool fits(const Hex& hex, const Front& f, const NearAtVertex& near, const std::vector<std::uint32_t>& onto) const {
     onto_.clear();
     for (std::uint32_t q : onto) onto_.push_back(&f.front.quads[q]);
     checked_.clear();
-    for (std::uint32_t v : hex)
+    bool ok = true;
+    for (std::uint32_t v : hex) {
       for (std::int32_t h : context_.at(v)) {
         if (std::find(checked_.begin(), checked_.end(), h) != checked_.end()) continue;
         checked_.push_back(h);
         if (!meets_as_glued(hex, cavity_.hexes[static_cast<std::size_t>(h)], onto_)) return false;
       }
-    for (std::int32_t a : f.near)
-      if (!meets_as_glued(hex, arena_[static_cast<std::size_t>(a)].hex, onto_)) return false;
+      near.each(v, [&](std::int32_t a) {
+        const std::int32_t id = id_of_placed(a);
+        if (!ok || std::find(checked_.begin(), checked_.end(), id) != checked_.end()) return;
+        checked_.push_back(id);
+        ok = meets_as_glued(hex, arena_[static_cast<std::size_t>(a)].hex, onto_);
+      });
+      if (!ok) return false;
+    }
     return true;
   }
 
@@ -254,7 +298,7 @@ private:
     if (!quadmap::fill_cube(f.front, f.twin, hex)) return;
     std::vector<std::uint32_t> all(f.front.size());
     for (std::uint32_t q = 0; q < all.size(); ++q) all[q] = q;
-    if (!fits(hex, f, all)) return;
+    if (!fits(hex, f, NearAtVertex(f.near, arena_), all)) return;
     State done;
     done.closed = true;
     done.hexes = s.hexes + 1;
@@ -290,8 +334,9 @@ private:
       // Each of the mesh's hexes goes onto the whole front: every front quad is covered.
       std::vector<std::uint32_t> all(f.front.size());
       for (std::uint32_t q = 0; q < all.size(); ++q) all[q] = q;
+      const NearAtVertex near_at(f.near, arena_);
       for (const Hex& h : hexes) {
-        if (!fits(h, f, all)) {
+        if (!fits(h, f, near_at, all)) {
           ok = false;
           break;
         }

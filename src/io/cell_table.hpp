@@ -4,6 +4,7 @@
 // shortest text that reads back to the same double, so every write round-trips
 // exactly and is deterministic.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "src/mesh/hex_mesh.hpp"
@@ -13,10 +14,18 @@ namespace loom {
 
 enum class CellShape { quad, hexahedron };
 
+/// A value per cell, written where the format carries cell data (VTK
+/// CELL_DATA, VTU CellData, MSH $ElementData).
+struct CellField {
+  std::string name;  ///< one word
+  std::vector<std::int32_t> values;
+};
+
 struct CellTable {
   const std::vector<Vec3>& points;
   CellShape shape;
   std::vector<std::uint32_t> connectivity;  ///< cell_count() * nodes_per_cell(), 0-based
+  std::vector<CellField> fields;            ///< each with cell_count() values
 
   std::size_t nodes_per_cell() const { return shape == CellShape::quad ? 4 : 8; }
   std::size_t cell_count() const { return connectivity.size() / nodes_per_cell(); }

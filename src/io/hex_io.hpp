@@ -3,6 +3,7 @@
 // chosen by extension, VTK node order in memory. Writes are atomic.
 #include <filesystem>
 
+#include "src/io/cell_table.hpp"
 #include "src/mesh/hex_mesh.hpp"
 
 namespace loom {
@@ -12,7 +13,8 @@ namespace loom {
 /// are ignored.
 HexMesh read_hex_mesh(const std::filesystem::path& file);
 
-/// Writes a hex mesh atomically; the format follows the extension.
-void write_hex_mesh(const std::filesystem::path& file, const HexMesh& mesh);
+/// Writes a hex mesh atomically; the format follows the extension. `fields`
+/// (a value per hex each) go into the file as cell data.
+void write_hex_mesh(const std::filesystem::path& file, const HexMesh& mesh, std::vector<CellField> fields = {});
 
 }  // namespace loom

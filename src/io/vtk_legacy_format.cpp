@@ -206,6 +206,11 @@ std::string legacy_vtk_text(const CellTable& table) {
   }
   fmt::format_to(put, "CELL_TYPES {}\n", table.cell_count());
   for (std::size_t c = 0; c < table.cell_count(); ++c) fmt::format_to(put, "{}\n", table.vtk_type());
+  if (!table.fields.empty()) fmt::format_to(put, "CELL_DATA {}\n", table.cell_count());
+  for (const CellField& f : table.fields) {
+    fmt::format_to(put, "SCALARS {} int 1\nLOOKUP_TABLE default\n", f.name);
+    for (std::int32_t v : f.values) fmt::format_to(put, "{}\n", v);
+  }
   return fmt::to_string(out);
 }
 

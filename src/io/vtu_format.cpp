@@ -159,10 +159,20 @@ std::string vtu_text(const CellTable& table) {
                  "<?xml version=\"1.0\"?>\n"
                  "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                  "  <UnstructuredGrid>\n"
-                 "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n"
-                 "      <Points>\n"
-                 "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
+                 "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
                  table.points.size(), table.cell_count());
+  if (!table.fields.empty()) {
+    fmt::format_to(put, "      <CellData Scalars=\"{}\">\n", table.fields.front().name);
+    for (const CellField& f : table.fields) {
+      fmt::format_to(put, "        <DataArray type=\"Int32\" Name=\"{}\" format=\"ascii\">\n", f.name);
+      for (std::int32_t v : f.values) fmt::format_to(put, "          {}\n", v);
+      fmt::format_to(put, "        </DataArray>\n");
+    }
+    fmt::format_to(put, "      </CellData>\n");
+  }
+  fmt::format_to(put,
+                 "      <Points>\n"
+                 "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
   for (const Vec3& p : table.points) fmt::format_to(put, "          {} {} {}\n", p[0], p[1], p[2]);
   fmt::format_to(put,
                  "        </DataArray>\n"

@@ -15,6 +15,12 @@ using closure::HexSource;
 
 namespace {
 
+/// The budget of a search on a front; `again`: a search on what another left.
+std::size_t budget_for(std::size_t front_quads, std::size_t least, bool again) {
+  if (again && front_quads <= kSmallFrontQuads) return std::max(least, kSmallFrontExpansions);
+  return std::clamp<std::size_t>(kExpansionsPerQuad * front_quads, least, kMostExpansions);
+}
+
 struct Builder {
   ClosedMesh out;
   std::vector<bool> placed;  ///< per point: has a position
@@ -136,16 +142,30 @@ ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, cons
     report.front_quads += cavity.front.size();
     b.add_neighbours_to(cavity, first_added);
     cavity.front.vertex_bound = b.bound();
-    const closure::ClosureResult r = closure::close_cavity(cavity, db, options);
-    report.search.expanded += r.stats.expanded;
-    report.search.generated += r.stats.generated;
-    report.search.seconds += r.stats.seconds;
-    report.search.peak_open = std::max(report.search.peak_open, r.stats.peak_open);
-    for (std::size_t i = 0; i < r.hexes.size(); ++i) {
-      b.add(r.hexes[i], r.source[i]);
-      (r.source[i] == HexSource::database ? report.database : report.searched) += 1;
+    auto search = [&](const closure::Cavity& c, bool again) {
+      closure::ClosureOptions sized = options;
+      sized.limits.max_expansions = budget_for(c.front.size(), options.limits.max_expansions, again);
+      closure::ClosureResult r = closure::close_cavity(c, db, sized);
+      report.search.expanded += r.stats.expanded;
+      report.search.generated += r.stats.generated;
+      report.search.seconds += r.stats.seconds;
+      report.search.peak_open = std::max(report.search.peak_open, r.stats.peak_open);
+      for (std::size_t i = 0; i < r.hexes.size(); ++i) {
+        b.add(r.hexes[i], r.source[i]);
+        (r.source[i] == HexSource::database ? report.database : report.searched) += 1;
+      }
+      b.reserve_points(r.vertex_bound);
+      return r;
+    };
+    closure::ClosureResult r = search(cavity, false);
+    // A search that stopped short spent much of its budget on large fronts;
+    // one on what it left, alone, goes further, as long as the front shrinks.
+    for (std::size_t before = cavity.front.size(); !r.closed && r.left.front.size() < before;) {
+      before = r.left.front.size();
+      closure::Cavity left = r.left;
+      left.front.vertex_bound = b.bound();
+      r = search(left, true);
     }
-    b.reserve_points(r.vertex_bound);
     if (!r.closed) {
       if (caps.empty()) {
         b.out.complete = false;

@@ -16,6 +16,14 @@
 
 namespace loom::pipeline {
 
+/// A search's budget grows with its front: large fronts take more gluings to
+/// close (randquad 200: about 20,000 expansions, 13 s). Fronts of at most 24
+/// quads, where gluings are few and paths to the database long, get 50,000.
+inline constexpr std::size_t kExpansionsPerQuad = 100;
+inline constexpr std::size_t kMostExpansions = 100'000;
+inline constexpr std::size_t kSmallFrontQuads = 24;
+inline constexpr std::size_t kSmallFrontExpansions = 50'000;
+
 struct ClosureReport {
   std::size_t woven = 0;        ///< woven hexes kept
   std::size_t peeled = 0;       ///< woven hexes removed to leave proper fronts
@@ -39,7 +47,9 @@ struct ClosedMesh {
 };
 
 /// `woven`: hexes over points whose first surface.points.size() are the
-/// surface's (stc::woven_over_surface). `db` may be null; with no `caps`, a
+/// surface's (stc::woven_over_surface). Each cavity's search gets a budget
+/// by its front (above; at least options' budget); when it stops short, the
+/// search runs again on what it left, while that keeps shrinking. `db` may be null; with no `caps`, a
 /// cavity the search does not close stays open (ClosedMesh::complete false).
 /// A filled cavity is pillowed (geometry::pillow_region), so that its fill
 /// meets the hexes round it in single faces, edges or vertices. Throws

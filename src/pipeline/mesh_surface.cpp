@@ -155,17 +155,21 @@ void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMe
   }
 }
 
-/// Small surfaces: the search alone, from the surface; kept if it beats what there is.
-void search_from_surface(MeshingResult& r, const QuadSurface& surface, Resources& res, const MeshingOptions& options) {
+/// The search alone from the surface (the fill of what it leaves too, with
+/// `fill`); kept if it beats the mesh there is.
+void search_from_surface(MeshingResult& r, const QuadSurface& surface, Resources& res, const MeshingOptions& options,
+                         std::size_t expansions, bool fill) {
   try {
     closure::ClosureOptions search = options.search;
-    // Beside a valid mesh, only a short search: it has to find a smaller one.
-    if (r.combinatorially_valid())
-      search.limits.max_expansions = std::min<std::size_t>(search.limits.max_expansions, kBesideValidExpansions);
-    ClosedMesh closed = close_cavities(surface, HexMesh{surface.points, {}}, res.database(), {}, search);
+    search.limits.max_expansions = expansions;
+    ClosedMesh closed = close_cavities(surface, HexMesh{surface.points, {}}, res.database(),
+                                       fill ? res.caps() : std::vector<fill::Cap>{}, search);
     if (!closed.complete || (r.combinatorially_valid() && closed.mesh.hexes.size() >= r.mesh->hexes.size())) return;
+    const ClosureReport report = closed.report;
     Candidate c = placed_candidate(std::move(closed), surface);
-    if (c.valid()) adopt(r, std::move(c), "searched");
+    if (!c.valid()) return;
+    adopt(r, std::move(c), "searched");
+    r.closure = report;
   } catch (const InputError& e) {
     if (r.closure_failure.empty()) r.closure_failure = e.what();
   }
@@ -214,7 +218,18 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
   if (options.closure != Closure::none) {
     Resources res(options);
     if (!r.combinatorially_valid()) close_cavities_of(r, surface, *best_woven, res, options);
-    if (surface.quads.size() <= kDirectSearchQuads) search_from_surface(r, surface, res, options);
+    const bool small = surface.quads.size() <= kDirectSearchQuads;
+    // Beside a valid mesh, only a short search: it has to find a smaller one.
+    if (small)
+      search_from_surface(r, surface, res, options,
+                          r.combinatorially_valid() ? kBesideValidExpansions : kSmallFrontExpansions, false);
+    // The woven hexes kept can leave cavities harder than the surface: when
+    // the closure had to fill, the search alone from the surface is tried too.
+    else if (r.made_by == "closed" && r.closure.filled > 0)
+      search_from_surface(r, surface, res, options,
+                          std::clamp<std::size_t>(kExpansionsPerQuad * surface.quads.size(), kSmallFrontExpansions,
+                                                  kMostExpansions),
+                          options.closure == Closure::full);
     if (!r.combinatorially_valid() && options.closure == Closure::full) fill_whole_surface(r, surface, res);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -9,8 +9,9 @@
 //      hexes of the attempt that left the fewest whiskers are kept as far as
 //      they can be part of a valid mesh, and each cavity left is closed by
 //      search and the database, then (Closure::full) filled where the search
-//      stopped short. A surface of at most kDirectSearchQuads quads is also
-//      closed by search from the surface itself, and the smaller valid mesh kept;
+//      stopped short. A surface of at most kDirectSearchQuads quads, and one
+//      whose cavities needed the fill, is also closed by search from the
+//      surface itself (no woven hex), and the smaller valid mesh kept;
 //   3. whole-surface fill (Closure::full), the last resort.
 // Then node placement and the validity check.
 #include <cstddef>
@@ -39,8 +40,9 @@ enum class Closure {
   full,    ///< also fill what the search leaves, and at last the whole surface
 };
 
-/// Surfaces with at most this many quads are also closed by search alone.
-inline constexpr std::size_t kDirectSearchQuads = 24;
+/// Surfaces with at most this many quads are also closed by search alone
+/// (with a short budget beside a valid woven mesh: it has to beat that one).
+inline constexpr std::size_t kDirectSearchQuads = kSmallFrontQuads;
 
 struct MeshingOptions {
   weave::WeaveOptions weave;
