@@ -163,3 +163,16 @@ TEST_CASE("woven hexes that could not be part of a valid mesh are peeled off") {
   CHECK(c.kept[0] == h);
   CHECK(c.pieces.empty());
 }
+
+TEST_CASE("closure is deterministic: the same surface gives the same hexes, and the search from a random quadrangulation closes it") {
+  const QuadSurface surface = gen::randquad(30, 3);
+  const auto caps = fill::load_caps(fill::default_caps_dir());
+  const HexMesh bare{surface.points, {}};
+  const auto a = pipeline::close_cavities(surface, bare, &shipped_database(), caps, {});
+  const auto b = pipeline::close_cavities(surface, bare, &shipped_database(), caps, {});
+  CHECK(a.mesh.hexes == b.mesh.hexes);
+  CHECK(a.source == b.source);
+  REQUIRE(a.complete);
+  CHECK(a.report.filled == 0);  // closed by search and database alone
+  CHECK(check_hex_mesh(a.mesh, &surface).combinatorial_valid());
+}
