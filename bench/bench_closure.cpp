@@ -192,7 +192,8 @@ int main(int argc, char** argv) {
   app.add_flag("--shapes", shapes, "Schneiders' pyramid and the spindle, each also renumbered three ways");
   app.add_flag("--pipeline", pipeline, "run loom weave's defaults (weave, cavity closure, fill) instead of the search alone");
   app.add_option("--expansions", options.limits.max_expansions, "search budget per cavity (default 4000)");
-  app.add_option("--weight", options.limits.weight, "weight of the search's estimate (default 3)");
+  app.add_option("--weight", options.limits.weight, "weight of the search's estimate (default 20)");
+  app.add_option("--growth", options.max_growth, "fronts larger than the start by more than this are not explored (default 8)");
   app.add_option("--database", database, "database file ('' for none)");
   app.add_option("--shard", shard, "run only inputs K-1, K-1+N, ... (K/N)");
   app.add_option("--csv", csv, "write one row per input");
