@@ -22,6 +22,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <random>
 #include <sstream>
 
@@ -221,11 +222,11 @@ int main(int argc, char** argv) {
 
   std::vector<std::function<Input()>> inputs;
   for (int f : parse_counts(quads)) {
-    const std::size_t count = quadmap::three_connected_quadrangulations(f).size();
-    for (std::size_t i = 0; i < count; ++i)
-      inputs.push_back([f, i] {
+    const auto maps = std::make_shared<const std::vector<quadmap::QuadMap>>(quadmap::three_connected_quadrangulations(f));
+    for (std::size_t i = 0; i < maps->size(); ++i)
+      inputs.push_back([f, i, maps] {
         return Input{fmt::format("quadrangulation {} {}", f, i), fmt::format("3-connected {} quads", f),
-                     gen::quadrangulation(f, static_cast<int>(i))};
+                     gen::quadrangulation((*maps)[i], static_cast<int>(i))};
       });
   }
   if (shapes)

@@ -235,11 +235,14 @@ TEST_CASE("bad sizes are input errors naming the kind") {
 TEST_CASE("quadrangulation: the enumerated 3-connected quadrangulations, on the sphere, valid inputs") {
   std::size_t total = 0;
   for (int f = 6; f <= 12; f += 2) {
-    const auto count = quadmap::three_connected_quadrangulations(f).size();
-    for (std::size_t i = 0; i < count; ++i) {
+    const auto maps = quadmap::three_connected_quadrangulations(f);
+    for (std::size_t i = 0; i < maps.size(); ++i) {
       const QuadSurface s = gen::quadrangulation(f, static_cast<int>(i));
       CHECK(s.quads.size() == static_cast<std::size_t>(f));
       check_surface(s);
+      const QuadSurface from_map = gen::quadrangulation(maps[i], static_cast<int>(i));  // what the bench uses
+      CHECK(from_map.quads == s.quads);
+      CHECK(from_map.points == s.points);
       ++total;
     }
   }

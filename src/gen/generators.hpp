@@ -10,6 +10,10 @@
 #include "src/mesh/hex_mesh.hpp"
 #include "src/mesh/quad_surface.hpp"
 
+namespace loom::quadmap {
+struct QuadMap;
+}
+
 namespace loom::gen {
 
 /// Largest number of quads or hexes a generator produces.
@@ -65,6 +69,9 @@ inline constexpr int kMaxEnumeratedFaces = 20;
 /// 1, 0, 1, 1, 3, 3, 11, ... for 6, 7, 8, ... quads), nodes on the unit
 /// sphere as randquad places them. The closure corpus is every one of 6..16 quads.
 QuadSurface quadrangulation(int faces, int index);
+/// The same surface from the map the enumeration gave at `index`, for callers
+/// that hold the enumeration (20 quads: 19 s to enumerate, not once per input).
+QuadSurface quadrangulation(const quadmap::QuadMap& map, int index);
 /// Surface of the box [0,6]x[0,4]x[0,1.5] with a cylindrical boss (radius 0.8
 /// round (1.75, 2), up to z = 3) and a block boss ([3.5,5.5]x[1,3], up to z =
 /// 2.5) on top, meshed all-quad by Gmsh. `bosses`: the part cut into 29

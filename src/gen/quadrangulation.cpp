@@ -23,9 +23,12 @@ QuadSurface quadrangulation(int faces, int index) {
                fmt::format("I is {}, but there {} {} 3-connected quadrangulation{} with {} quads", index,
                            all.size() == 1 ? "is" : "are", all.size(), all.size() == 1 ? "" : "s", faces),
                all.empty() ? "choose another F" : fmt::format("choose I from 0 to {}", all.size() - 1));
-  const auto& m = all[static_cast<std::size_t>(index)];
-  std::mt19937_64 rng(static_cast<std::uint64_t>(faces) * 1000003u + static_cast<std::uint64_t>(index));
-  return {embed_on_sphere(m.quads, m.vertex_bound, rng), m.quads};
+  return quadrangulation(all[static_cast<std::size_t>(index)], index);
+}
+
+QuadSurface quadrangulation(const quadmap::QuadMap& map, int index) {
+  std::mt19937_64 rng(static_cast<std::uint64_t>(map.quads.size()) * 1000003u + static_cast<std::uint64_t>(index));
+  return {embed_on_sphere(map.quads, map.vertex_bound, rng), map.quads};
 }
 
 }  // namespace loom::gen
