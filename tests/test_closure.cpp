@@ -12,6 +12,7 @@
 #include "src/fill/fill.hpp"
 #include "src/gen/generators.hpp"
 #include "src/pipeline/cavity_closure.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
 #include "src/util/error.hpp"
@@ -175,4 +176,19 @@ TEST_CASE("closure is deterministic: the same surface gives the same hexes, and 
   REQUIRE(a.complete);
   CHECK(a.report.filled == 0);  // closed by search and database alone
   CHECK(check_hex_mesh(a.mesh, &surface).combinatorial_valid());
+}
+
+TEST_CASE("loom weave's pipeline searches a small surface fully when the weave's mesh is larger than 72 hexes") {
+  // Quadrangulation 16 90: the weave gives a valid mesh of 117 hexes; a short
+  // search from the surface finds 77, the full one 55 (before the boundary layer).
+  const QuadSurface surface = gen::quadrangulation(16, 90);
+  pipeline::MeshingOptions options;
+  options.attempts = 16;
+  options.closure = pipeline::Closure::search;
+  options.database = database_file(weave::default_rules_dir());
+  const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  const pipeline::MeshingResult r = pipeline::mesh_surface(surface, rules, options);
+  REQUIRE(r.combinatorially_valid());
+  CHECK(r.made_by == "searched");
+  CHECK(r.mesh->hexes.size() - r.boundary_layer.hexes_added <= 72);
 }

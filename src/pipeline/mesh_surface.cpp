@@ -233,7 +233,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     Resources res(options);
     if (!r.combinatorially_valid()) close_cavities_of(r, surface, *best_woven, res, options);
     const bool small = surface.quads.size() <= kDirectSearchQuads;
-    // Beside a valid mesh, only a short search: it has to find a smaller one.
+    // Beside a valid mesh within the published bound, only a short search: it has to find a smaller one.
     if (small)
       search_from_surface(r, surface, res, options,
                           within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions, false);
