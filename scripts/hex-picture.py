@@ -46,8 +46,13 @@ def read_vtk(path):
         k = int(tokens[at])
         if k != 8:
             fail(f"{path}: a cell with {k} nodes; this draws hex meshes only")
-        cells.append(tuple(int(t) for t in tokens[at + 1: at + 9]))
+        cell = tuple(int(t) for t in tokens[at + 1: at + 9])
+        if len(cell) != 8 or any(not 0 <= v < n for v in cell):
+            fail(f"{path}: cell {len(cells)} names a node that is not in POINTS; the file is damaged")
+        cells.append(cell)
         at += 9
+    if not cells:
+        fail(f"{path}: no hexes to draw")
     source = [0] * len(cells)
     if "source" in tokens:
         s = tokens.index("source") + 5  # source int 1 LOOKUP_TABLE default
@@ -89,7 +94,7 @@ def write_png(path, width, height, polygons):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("mesh")
-    ap.add_argument("svg")
+    ap.add_argument("picture", help="PICTURE.png or PICTURE.svg")
     ap.add_argument("--axis", choices="xyz", default="x")
     ap.add_argument("--keep", type=float, default=0.5, help="fraction of the extent kept (default 0.5)")
     a = ap.parse_args()
@@ -141,8 +146,8 @@ def main():
 
     drawn.sort(key=lambda d: sum(projected[v][2] for v in d[0]))
     polygons = [([screen(v) for v in quad], shade_rgb(quad, COLOURS.get(s, (0, 0, 0)))) for quad, s in drawn]
-    tmp = a.svg + ".tmp"
-    if a.svg.endswith(".png"):
+    tmp = a.picture + ".tmp"
+    if a.picture.endswith(".png"):
         write_png(tmp, int(size), int(size), polygons)
     else:
         out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{size:.0f}" height="{size + 30:.0f}">',
@@ -161,8 +166,8 @@ def main():
         out.append("</svg>")
         with open(tmp, "w") as f:
             f.write("\n".join(out) + "\n")
-    os.replace(tmp, a.svg)
-    print(f"wrote {a.svg}: {len(kept)} of {len(cells)} hexes, {len(drawn)} faces")
+    os.replace(tmp, a.picture)
+    print(f"wrote {a.picture}: {len(kept)} of {len(cells)} hexes, {len(drawn)} faces")
 
 
 if __name__ == "__main__":
