@@ -168,12 +168,16 @@ void print_summary(const std::vector<Outcome>& all, bool pipeline) {
   for (const auto& g : order) {
     const Summary& s = groups[g];
     const double t = s.seconds > 0 ? s.seconds : 1;
-    std::cout << fmt::format("| {} | {} | {} | {} | {} | {} | {:.3f} | {:.0f} | {:.0f} | {:.0f} / {:.0f} / {:.0f} / {:.0f} |\n", g,
-                             s.n, s.closed, s.comb_valid, s.closed ? fmt::format("{}", s.most) : "-",
+    const closure::SearchProfile& p = s.profile;
+    // The CSV holds no profile: merged shards say so rather than 0 / 0 / 0 / 0.
+    const std::string profile = p.rebuild + p.canonical + p.database + p.gluing > 0
+        ? fmt::format("{:.0f} / {:.0f} / {:.0f} / {:.0f}", 100 * p.rebuild / t, 100 * p.canonical / t,
+                      100 * p.database / t, 100 * p.gluing / t)
+        : "- (see the shards' own tables)";
+    std::cout << fmt::format("| {} | {} | {} | {} | {} | {} | {:.3f} | {:.0f} | {:.0f} | {} |\n", g, s.n, s.closed,
+                             s.comb_valid, s.closed ? fmt::format("{}", s.most) : "-",
                              s.closed ? fmt::format("{:.1f}", double(s.total) / double(s.closed)) : "-",
-                             s.seconds / double(s.n), double(s.expanded) / t, double(s.states) / t,
-                             100 * s.profile.rebuild / t, 100 * s.profile.canonical / t, 100 * s.profile.database / t,
-                             100 * s.profile.gluing / t);
+                             s.seconds / double(s.n), double(s.expanded) / t, double(s.states) / t, profile);
   }
 }
 
