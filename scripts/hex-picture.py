@@ -39,10 +39,15 @@ def read_vtk(path):
             fail(f"{path}: no {name} section; give a legacy ASCII .vtk that loom weave wrote")
     p = section("POINTS")
     n = int(tokens[p + 1])
+    if not 0 <= n <= (len(tokens) - p) // 3:
+        fail(f"{path}: POINTS says {n} nodes, more than the file holds; the file is damaged")
     points = [tuple(float(t) for t in tokens[p + 3 + 3 * i: p + 6 + 3 * i]) for i in range(n)]
     c = section("CELLS")
     cells, at = [], c + 3
-    for _ in range(int(tokens[c + 1])):
+    count = int(tokens[c + 1])
+    if not 0 <= count <= (len(tokens) - c) // 9:
+        fail(f"{path}: CELLS says {count} cells, more than the file holds; the file is damaged")
+    for _ in range(count):
         k = int(tokens[at])
         if k != 8:
             fail(f"{path}: a cell with {k} nodes; this draws hex meshes only")

@@ -75,8 +75,12 @@ void place(Candidate& c, const QuadSurface& surface) {
     place_with_boundary_layer(c, surface, true);
 }
 
+/// Hexes of the result before its boundary layer, which placement adds to
+/// some meshes and not others: meshes are compared by this count.
+std::size_t hexes_before_layer(const MeshingResult& r) { return r.mesh->hexes.size() - r.boundary_layer.hexes_added; }
+
 bool within_published_bound(const MeshingResult& r) {
-  return r.combinatorially_valid() && r.mesh->hexes.size() - r.boundary_layer.hexes_added <= kPublishedSmallBound;
+  return r.combinatorially_valid() && hexes_before_layer(r) <= kPublishedSmallBound;
 }
 
 /// Takes `c` as the result.
@@ -174,11 +178,7 @@ void search_from_surface(MeshingResult& r, const QuadSurface& surface, Resources
     search.limits.max_expansions = expansions;
     ClosedMesh closed = close_cavities(surface, HexMesh{surface.points, {}}, res.database(),
                                        fill ? res.caps() : std::vector<fill::Cap>{}, search);
-    // Compared before the boundary layer, which placement adds to either or neither.
-    if (!closed.complete ||
-        (r.combinatorially_valid() &&
-         closed.mesh.hexes.size() >= r.mesh->hexes.size() - r.boundary_layer.hexes_added))
-      return;
+    if (!closed.complete || (r.combinatorially_valid() && closed.mesh.hexes.size() >= hexes_before_layer(r))) return;
     const ClosureReport report = closed.report;
     Candidate c = placed_candidate(std::move(closed), surface);
     if (!c.valid()) return;

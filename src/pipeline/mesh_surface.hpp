@@ -41,7 +41,8 @@ enum class Closure {
 };
 
 /// Surfaces with at most this many quads are also closed by search alone
-/// (with a short budget beside a valid woven mesh: it has to beat that one).
+/// (with a short budget beside a valid woven mesh of at most 72 hexes: it has
+/// to beat that one).
 inline constexpr std::size_t kDirectSearchQuads = kSmallFrontQuads;
 
 struct MeshingOptions {
