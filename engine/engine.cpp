@@ -11,7 +11,7 @@ namespace loom::engine {
 Engine::Engine(Graph& graph, std::vector<Rule> rules, Actions actions, Strategy strategy)
     : g_(graph), rules_(std::move(rules)), actions_(std::move(actions)), strategy_(std::move(strategy)),
       matcher_(graph), state_(rules_.size()), rng_(strategy_.seed) {
-  for (const Rule& r : rules_) check_actions(r, actions_);
+  for (const Rule& r : rules_) check_actions(r, actions_, g_.schema());
   for (std::size_t i = 0; i < rules_.size(); ++i) state_[i].rank = rules_[i].priority;
   if (strategy_.kind == Strategy::Kind::sequence) {
     for (auto& s : state_) s.enabled = false;

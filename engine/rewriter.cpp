@@ -25,13 +25,7 @@ bool apply_rewrite(Graph& g, Match& m, const Actions& actions) {
   const Matcher eval(g);
   for (const RewriteOp& op : rule.rewrite) {
     try {
-      if (apply_op(g, m, op, actions, eval)) continue;
-      if (&op != &rule.rewrite.front())
-        throw RuleError(rule.file, op.pos,
-                        fmt::format("rule '{}': action '{}' declined after earlier statements changed the graph; "
-                                    "call it first in the rewrite",
-                                    rule.name, op.action));
-      return false;
+      if (!apply_op(g, m, op, actions, eval)) return false;
     } catch (const RuleError&) {
       throw;
     } catch (const std::exception& e) {
@@ -78,7 +72,12 @@ bool apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, c
       case RewriteOp::Kind::call: {
         std::vector<Id> args;
         for (int v : op.args) args.push_back(m.elements[v]);
-        return (*actions.find(op.action))(g, args);
+        const Actions::Entry& action = *actions.find(op.action);
+        if (action.run(g, args)) return true;
+        if (action.declines == Declines::never)
+          throw RuleError(rule.file, op.pos,
+                          fmt::format("rule '{}': action '{}' declined, but it is declared never to", rule.name, op.action));
+        return false;
       }
     }
   }
@@ -86,10 +85,34 @@ bool apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, c
 }
 }  // namespace
 
-void check_actions(const Rule& rule, const Actions& actions) {
-  for (const RewriteOp& op : rule.rewrite)
-    if (op.kind == RewriteOp::Kind::call && !actions.find(op.action))
-      throw RuleError(rule.file, op.pos, fmt::format("expected a known action, found '{}'", op.action));
+void check_actions(const Rule& rule, const Actions& actions, const Schema& schema) {
+  auto kind = [&](KindId k) {
+    const std::string& noun = schema.kind(k).name;
+    return (noun.find_first_of("aeiou") == 0 ? "an " : "a ") + noun;
+  };
+  for (const RewriteOp& op : rule.rewrite) {
+    if (op.kind != RewriteOp::Kind::call) continue;
+    const Actions::Entry* action = actions.find(op.action);
+    if (!action) throw RuleError(rule.file, op.pos, fmt::format("expected a known action, found '{}'", op.action));
+    const auto& params = action->parameters;
+    if (op.args.size() != params.size()) {
+      std::string list;
+      for (const ActionParameter& p : params)
+        list += fmt::format("{}{} {}", list.empty() ? "" : ", ", schema.kind(p.kind).name, p.name);
+      throw RuleError(rule.file, op.pos, fmt::format("action '{}' takes {} argument{} ({}), found {}", op.action,
+                                                     params.size(), params.size() == 1 ? "" : "s", list, op.args.size()));
+    }
+    for (std::size_t i = 0; i < params.size(); ++i) {
+      const Variable& arg = rule.vars[static_cast<std::size_t>(op.args[i])];
+      if (arg.kind != params[i].kind)
+        throw RuleError(rule.file, op.pos,
+                        fmt::format("argument {} of action '{}' ({}) must be {}, found '{}', {}", i + 1, op.action,
+                                    params[i].name, kind(params[i].kind), arg.name, kind(arg.kind)));
+    }
+    if (action->declines == Declines::sometimes && &op != &rule.rewrite.front())
+      throw RuleError(rule.file, op.pos,
+                      fmt::format("action '{}' may decline, so it must be the first statement of the rewrite", op.action));
+  }
 }
 
 }  // namespace loom::engine

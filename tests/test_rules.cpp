@@ -151,17 +151,20 @@ TEST_CASE("incremental matching agrees with a full rescan on weaves where every 
   for (const auto& r : rules) CHECK_MESSAGE(applied[r.name] > 0, r.name << " never applied: the case does not cover it");
 }
 
-TEST_CASE("a match whose action declines is passed over and not counted; declining after a change is an error") {
+TEST_CASE("a match whose action declines is passed over and not counted; an action declines only where declared") {
   stc::Stc stc = stc::build_from_surface(gen::box(1, 1, 1));
   std::set<engine::Id> asked;
   engine::Actions actions;
   // Acts on the second node it is asked about only.
-  actions.add("second", [&](engine::Graph& g, std::span<const engine::Id> args) {
-    asked.insert(args[0]);
-    if (asked.size() != 2) return false;
-    g.set(args[0], stc.ids().node_boundary, 7);
-    return true;
-  });
+  actions.add(
+      "second", {{"v", stc.ids().node}},
+      [&](engine::Graph& g, std::span<const engine::Id> args) {
+        asked.insert(args[0]);
+        if (asked.size() != 2) return false;
+        g.set(args[0], stc.ids().node_boundary, 7);
+        return true;
+      },
+      engine::Declines::sometimes);
   auto rules = engine::compile_rules("rule r { match { v: node where boundary == 1 } rewrite { call second(v) } }",
                                      "r.rule", schema());
   engine::Engine eng(stc.graph(), rules, actions, {});
@@ -176,20 +179,43 @@ TEST_CASE("a match whose action declines is passed over and not counted; declini
   CHECK(eng.applications().at("r") == 1);
   CHECK(eng.counters().steps == 1);
 
+  // An action that may decline is refused anywhere but first; one declared
+  // never to decline and declining is an error naming the call.
   stc::Stc again = stc::build_from_surface(gen::box(1, 1, 1));
   engine::Actions no;
-  no.add("no", [](engine::Graph&, std::span<const engine::Id>) { return false; });
-  auto late = engine::compile_rules("rule late { match { v: node where boundary == 1 } rewrite { v.boundary = 3\n call no(v) } }",
+  no.add("maybe", {{"v", again.ids().node}}, [](engine::Graph&, std::span<const engine::Id>) { return false; },
+         engine::Declines::sometimes);
+  no.add("never", {{"v", again.ids().node}}, [](engine::Graph&, std::span<const engine::Id>) { return false; });
+  auto late = engine::compile_rules("rule late { match { v: node where boundary == 1 } rewrite { v.boundary = 3\n call maybe(v) } }",
                                     "late.rule", schema());
-  engine::Engine eng2(again.graph(), late, no, {});
-  try {
-    eng2.step();
-    FAIL("expected a RuleError");
-  } catch (const engine::RuleError& e) {
-    CHECK(std::string(e.what()) ==
-          "late.rule:2:2: rule 'late': action 'no' declined after earlier statements changed the graph; call it "
-          "first in the rewrite");
-  }
+  CHECK_THROWS_WITH_AS(engine::Engine(again.graph(), late, no, {}),
+                       "late.rule:2:2: action 'maybe' may decline, so it must be the first statement of the rewrite",
+                       engine::RuleError);
+  auto liar = engine::compile_rules("rule liar { match { v: node where boundary == 1 } rewrite { call never(v) } }",
+                                    "liar.rule", schema());
+  engine::Engine eng2(again.graph(), liar, no, {});
+  CHECK_THROWS_WITH_AS(eng2.step(), "liar.rule:1:61: rule 'liar': action 'never' declined, but it is declared never to",
+                       engine::RuleError);
+}
+
+TEST_CASE("a call with the wrong number or kinds of arguments is refused when rules load") {
+  stc::Stc stc = stc::build_from_surface(gen::box(1, 1, 1));
+  auto error = [&](const std::string& text) {
+    auto rules = engine::compile_rules(text, "x.rule", schema());
+    try {
+      engine::Engine(stc.graph(), rules, weave::weave_actions(stc), {});
+    } catch (const engine::RuleError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(error("rule r { match { n: node\n v: node } rewrite { call place_hex_corner(n, v) } }") ==
+        "x.rule:2:22: action 'place_hex_corner' takes 5 arguments (node n, node v, node a, node b, node c), found 2");
+  CHECK(error("rule r { match { v: node } rewrite { call pillow_star() } }") ==
+        "x.rule:1:38: action 'pillow_star' takes 1 argument (node n), found 0");
+  CHECK(error("rule r { match { h: hex\n v: node } rewrite { call pillow_doublet(h, v) } }") ==
+        "x.rule:2:22: argument 2 of action 'pillow_doublet' (h2) must be a hex, found 'v', a node");
+  CHECK(error("rule r { match { v: node } rewrite { call pillow_star(v) } }").empty());
 }
 
 TEST_CASE("a new rule file in a temporary directory is applied without recompiling") {
@@ -243,6 +269,28 @@ TEST_CASE("loom weave fails cleanly without the seam rule, and on a broken rule 
   r = run_cli("rules explain " + (dir / "broken.rule").string());
   CHECK(r.status == 2);
   std::filesystem::remove(dir / "broken.rule");
+
+  // A copy of cross.rule that gives place_hex_corner two of its five
+  // arguments: refused at load, before anything is woven.
+  {
+    std::string cross = loom::test::slurp(dir / "cross.rule");
+    const std::string call = "call place_hex_corner(n, v, p12, p23, p31)";
+    REQUIRE(cross.find(call) != std::string::npos);
+    cross.replace(cross.find(call), call.size(), "call place_hex_corner(n, v)");
+    write(dir / "cross.rule", cross);
+    for (const std::string& cmd : {"rules list " + dir.path().string(), "rules explain " + (dir / "cross.rule").string(),
+                                   "weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() +
+                                       " --rules " + dir.path().string()}) {
+      r = run_cli(cmd);
+      CHECK_MESSAGE(r.status == 2, cmd);
+      CHECK(loom::test::count_lines(r.err) == 1);
+      CHECK_MESSAGE(r.err.find("cross.rule:75:") != std::string::npos, r.err);
+      CHECK(r.err.find("action 'place_hex_corner' takes 5 arguments") != std::string::npos);
+    }
+    CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
+    std::filesystem::copy_file(weave::default_rules_dir() / "cross.rule", dir / "cross.rule",
+                               std::filesystem::copy_options::overwrite_existing);
+  }
 
   write(dir / "action.rule", "rule act {\n  match { v: node }\n  rewrite { call frobnicate(v) }\n}\n");
   r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --rules " +

@@ -32,7 +32,7 @@ std::vector<loom::engine::Rule> load(const std::string& path) {
     }
     loom::stc::Stc scratch;
     auto actions = loom::weave::weave_actions(scratch);
-    for (const auto& r : rules) loom::engine::check_actions(r, actions);
+    for (const auto& r : rules) loom::engine::check_actions(r, actions, schema);
     return rules;
   } catch (const loom::engine::RuleError& e) {
     throw loom::InputError(std::string(e.what()) + "; fix the rule file (grammar: docs/rules.md)");

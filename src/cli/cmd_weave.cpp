@@ -49,7 +49,7 @@ std::vector<loom::engine::Rule> load_rules(const std::string& dir) {
     auto rules = loom::engine::load_rule_dir(dir, *loom::stc::StcSchema::get().schema);
     loom::stc::Stc scratch;
     auto actions = loom::weave::weave_actions(scratch);
-    for (const auto& r : rules) loom::engine::check_actions(r, actions);
+    for (const auto& r : rules) loom::engine::check_actions(r, actions, *loom::stc::StcSchema::get().schema);
     return rules;
   } catch (const loom::engine::RuleError& e) {
     throw rule_error(e);

@@ -52,9 +52,10 @@ Vec3 placed(const stc::Stc& stc, engine::Id node, const char* action) {
 
 engine::Actions weave_actions(stc::Stc& stc) {
   engine::Actions actions;
+  const engine::KindId node = stc.ids().node, hex = stc.ids().hex;
   // place_hex_corner(n, v, a, b, c): n is the corner of the hex at v opposite
   // v, whose edges from v run to a, b and c: n = a + b + c - 2v.
-  actions.add("place_hex_corner", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+  actions.add("place_hex_corner", {{"n", node}, {"v", node}, {"a", node}, {"b", node}, {"c", node}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     auto at = [&](engine::Id node) { return placed(stc, node, "place_hex_corner"); };
     stc.place(args[0], at(args[2]) + at(args[3]) + at(args[4]) - 2.0 * at(args[1]));
     return true;
@@ -62,7 +63,7 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // place_off_face(n, a, b, d): n is the corner above a of a hex standing on
   // a front face a b . d (which faces away from the hex), at the face's
   // mean edge length from a.
-  actions.add("place_off_face", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+  actions.add("place_off_face", {{"n", node}, {"a", node}, {"b", node}, {"d", node}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     auto at = [&](engine::Id node) { return placed(stc, node, "place_off_face"); };
     Vec3 a = at(args[1]), ab = at(args[2]) - a, ad = at(args[3]) - a;
     Vec3 away = cross(ab, ad);
@@ -71,7 +72,7 @@ engine::Actions weave_actions(stc::Stc& stc) {
     return true;
   });
   // pillow_star(n): a pillow sheet around every hex at node n.
-  actions.add("pillow_star", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+  actions.add("pillow_star", {{"n", node}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     auto star = hexes_at_node(stc, args[0]);
     insert_pillow(stc, star);
     return true;
@@ -80,13 +81,13 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // h1's faces at the ends of the edges h1 shares with h2 (their faces
   // there share two edges with h2's: without them in the set, a pillow hex
   // would meet h2 in three nodes).
-  actions.add("pillow_doublet", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+  actions.add("pillow_doublet", {{"h1", hex}, {"h2", hex}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     insert_pillow(stc, doublet_shrink_set(stc, args[0], args[1]));
     return true;
   });
   // split_pinched(n): one node per group of n's hexes that meet only at n;
   // each part's boundary flag is 1 exactly when it holds a boundary face.
-  actions.add("split_pinched", [&stc](engine::Graph&, std::span<const engine::Id> args) {
+  actions.add("split_pinched", {{"n", node}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     split_pinched_node(stc, args[0]);
     return true;
   });
@@ -94,12 +95,15 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // two hexes at n that meet improperly (improper.hpp); declines while
   // whiskers are left (hexes still change), where n's hexes meet properly,
   // and where no pillow would leave fewer improper meetings.
-  actions.add("pillow_improper", [&stc, open_sides = OpenSides(stc), corners = std::make_shared<HexCornerCache>(stc)](
-                                     engine::Graph&, std::span<const engine::Id> args) {
-    if (open_sides() > 0) return false;
-    auto pair = improper_pair_at(stc, args[0], *corners);
-    return pair && pillow_improper_pair(stc, pair->first, pair->second) > 0;
-  });
+  actions.add(
+      "pillow_improper", {{"n", node}},
+      [&stc, open_sides = OpenSides(stc), corners = std::make_shared<HexCornerCache>(stc)](
+          engine::Graph&, std::span<const engine::Id> args) {
+        if (open_sides() > 0) return false;
+        auto pair = improper_pair_at(stc, args[0], *corners);
+        return pair && pillow_improper_pair(stc, pair->first, pair->second) > 0;
+      },
+      engine::Declines::sometimes);
   return actions;
 }
 
