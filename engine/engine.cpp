@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "engine/rule_parser.hpp"
+
 namespace loom::engine {
 
 Engine::Engine(Graph& graph, std::vector<Rule> rules, Actions actions, Strategy strategy)
@@ -214,18 +216,30 @@ bool Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
   }
   log_.clear();
   g_.set_change_log(&log_);
+  const Graph::Checkpoint before = g_.checkpoint();
+  // The rewrite's changes reach the candidate queues only once it is kept,
+  // so a rollback leaves them as they were.
+  auto roll_back = [&] {
+    g_.set_change_log(nullptr);
+    g_.rollback(before);
+    g_.release(before);
+    log_.clear();
+  };
   bool acted;
   try {
     acted = apply_rewrite(g_, m, actions_);
+    if (acted) check_application(rules_[r]);
   } catch (...) {
-    g_.set_change_log(nullptr);
+    roll_back();
     throw;
   }
-  g_.set_change_log(nullptr);
   if (!acted) {
+    roll_back();
     declined_.emplace_back(r, m.elements[rules_[r].anchor]);
     return false;
   }
+  g_.set_change_log(nullptr);
+  g_.release(before);
   ++counters_.steps;
   ++applications_[rules_[r].name];
   if (applied) {
@@ -236,6 +250,37 @@ bool Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
   if (full_rescan_) rescan();
   else process_changes();
   return true;
+}
+
+void Engine::check_after(Invariant check, const std::vector<std::string>& rules) {
+  invariant_ = std::move(check);
+  checked_.assign(rules_.size(), rules.empty());
+  for (const std::string& name : rules) {
+    auto it = std::find_if(rules_.begin(), rules_.end(), [&](const Rule& r) { return r.name == name; });
+    if (it == rules_.end()) throw std::invalid_argument(fmt::format("no rule '{}' is loaded to check", name));
+    checked_[rule_index(&*it)] = true;
+  }
+}
+
+void Engine::check_application(const Rule& rule) const {
+  const Schema& schema = g_.schema();
+  for (const Graph::Change& c : log_) {
+    if ((c.kind != Graph::Change::Kind::out && c.kind != Graph::Change::Kind::created) || !g_.alive(c.element)) continue;
+    const KindSpec& kind = schema.kind(g_.kind(c.element));
+    for (PortId p : kind.ports) {
+      const PortSpec& port = schema.port(p);
+      if (port.presence != PortPresence::required) continue;
+      for (unsigned i = 0; i < port.arity; ++i)
+        if (g_.at(c.element, p, i) == no_element)
+          throw RuleError(rule.file, rule.pos,
+                          fmt::format("rule '{}' left {} {}'s {}[{}] empty, which must not be; the rewrite was rolled back",
+                                      rule.name, kind.name, c.element, port.name, i));
+    }
+  }
+  if (invariant_ && checked_[rule_index(&rule)])
+    if (std::string broken = invariant_(g_); !broken.empty())
+      throw RuleError(rule.file, rule.pos,
+                      fmt::format("rule '{}' broke an invariant: {}; the rewrite was rolled back", rule.name, broken));
 }
 
 void Engine::trace(const Rule& rule, int var, Id element) {

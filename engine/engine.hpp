@@ -9,7 +9,14 @@
 // tried again. So the cost of a step follows what the step changed, not the
 // size of the graph. A candidate is matched when queued and once more when
 // chosen, so stale candidates are dropped.
+//
+// Every application is a transaction. It runs inside a checkpoint of the
+// graph; if its rewrite throws, its action declines, it leaves a slot of a
+// required port empty (schema.hpp) or it breaks an invariant the caller asked
+// to check, the graph is rolled back to where it was, and (but for a decline)
+// a RuleError names the rule and its file.
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <queue>
 #include <random>
@@ -47,8 +54,16 @@ public:
   Engine(Graph& graph, std::vector<Rule> rules, Actions actions, Strategy strategy);
 
   /// Applies one match, chosen by the strategy (a match whose action declines
-  /// is passed over). Returns false when no rule applies.
+  /// is passed over). Returns false when no rule applies. Throws RuleError
+  /// when the application failed; the graph is then as it was before.
   bool step(Application* applied = nullptr);
+
+  /// A check of the whole graph: empty when it holds, else what is broken.
+  using Invariant = std::function<std::string(const Graph&)>;
+  /// Runs `check` after each application of the rules named (of every rule
+  /// when `rules` is empty); throws std::invalid_argument naming a rule that
+  /// is not loaded.
+  void check_after(Invariant check, const std::vector<std::string>& rules = {});
 
   // --- choices and undo, for search with backtracking -------------------------
   /// Up to `limit` applicable matches, best first, from the highest-priority
@@ -105,6 +120,8 @@ private:
   bool try_rule_queue(std::size_t rule, Application* applied);
   bool try_random_tier(const std::vector<std::size_t>& tier, Application* applied);
   bool apply_rule(std::size_t rule, Match& m, Application* applied);
+  /// Throws RuleError if the application just made broke what it must keep.
+  void check_application(const Rule& rule) const;
   std::size_t rule_index(const Rule* r) const { return static_cast<std::size_t>(r - rules_.data()); }
 
   Graph& g_;
@@ -127,6 +144,8 @@ private:
   EngineCounters counters_;
   std::map<std::string, std::size_t> applications_;
   std::vector<std::pair<std::size_t, Id>> declined_;  ///< (rule, anchor)
+  Invariant invariant_;
+  std::vector<bool> checked_;  ///< per rule: run invariant_ after its applications
 };
 
 }  // namespace loom::engine

@@ -122,7 +122,9 @@ public:
   using Checkpoint = std::size_t;
   Checkpoint checkpoint();
   void rollback(Checkpoint c);
-  /// Closes the checkpoint (and every later one): its changes are kept.
+  /// Closes the checkpoint and every later one: their changes are kept. Of
+  /// checkpoints opened at one point (nothing changed between them), it
+  /// closes the newest only, so nested transactions may start together.
   void release(Checkpoint c);
   /// Closes the oldest open checkpoint only, dropping the records that only
   /// it needed (so a window of recent checkpoints costs bounded memory).

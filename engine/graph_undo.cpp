@@ -12,7 +12,8 @@ Graph::Checkpoint Graph::checkpoint() {
 }
 
 void Graph::release(Checkpoint c) {
-  while (!open_.empty() && open_.back() >= c) open_.pop_back();
+  while (!open_.empty() && open_.back() > c) open_.pop_back();
+  if (!open_.empty() && open_.back() == c) open_.pop_back();
   if (open_.empty()) {
     undo_base_ += undo_.size();
     undo_.clear();

@@ -109,6 +109,7 @@ struct CountWatch {
 
 struct Rule {
   std::string name, file;
+  ast::Pos pos;                          ///< of the rule's name
   std::int64_t priority = 0;
   std::optional<CExpr> order;
   std::vector<Variable> vars;            ///< main pattern, then negatives', then created

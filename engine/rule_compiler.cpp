@@ -33,6 +33,7 @@ public:
   Rule run() {
     r_.name = ast_.name;
     r_.file = ast_.file;
+    r_.pos = ast_.pos;
     r_.priority = ast_.priority;
     for (const auto& d : ast_.pattern.declarations) declare(d, -1);
     r_.pattern_vars = static_cast<int>(r_.vars.size());

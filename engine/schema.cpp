@@ -14,7 +14,7 @@ KindId Schema::add_kind(std::string_view name) {
 }
 
 PortId Schema::add_port(KindId owner, std::string_view name, unsigned arity, KindId target,
-                        PortOrder order) {
+                        PortOrder order, PortPresence presence) {
   KindSpec& k = kinds_.at(owner);
   kinds_.at(target);
   if (find_port(owner, name))
@@ -22,7 +22,7 @@ PortId Schema::add_port(KindId owner, std::string_view name, unsigned arity, Kin
   if (arity == 0 || k.slot_count + arity > 255)
     throw std::invalid_argument(fmt::format("schema: port '{}.{}' has a bad arity {}", k.name, name, arity));
   ports_.push_back(PortSpec{std::string(name), owner, target, static_cast<std::uint8_t>(arity),
-                            k.slot_count, order});
+                            k.slot_count, order, presence});
   k.slot_count = static_cast<std::uint8_t>(k.slot_count + arity);
   k.ports.push_back(static_cast<PortId>(ports_.size() - 1));
   k.slot_ports.insert(k.slot_ports.end(), arity, k.ports.back());

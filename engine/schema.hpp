@@ -23,6 +23,11 @@ using AttrId = std::uint16_t;
 /// `cyclic` (slot i+1 follows slot i, and the last is followed by the first).
 enum class PortOrder : std::uint8_t { ordered, cyclic };
 
+/// Whether a port's slots may be empty. The engine holds every rewrite to
+/// this: once it is complete, no slot of a `required` port of an element it
+/// changed or created is empty, or the rewrite is rolled back.
+enum class PortPresence : std::uint8_t { optional, required };
+
 struct PortSpec {
   std::string name;
   KindId owner = 0;
@@ -30,6 +35,7 @@ struct PortSpec {
   std::uint8_t arity = 0;
   std::uint8_t first_slot = 0;  ///< offset of this port's slots in the owner's slot block
   PortOrder order = PortOrder::ordered;
+  PortPresence presence = PortPresence::optional;
 };
 
 struct AttrSpec {
@@ -53,7 +59,7 @@ public:
   KindId add_kind(std::string_view name);
   /// Adds a port of `arity` slots (1..255 slots per kind in all) to `owner`.
   PortId add_port(KindId owner, std::string_view name, unsigned arity, KindId target,
-                  PortOrder order = PortOrder::ordered);
+                  PortOrder order = PortOrder::ordered, PortPresence presence = PortPresence::optional);
   /// Adds an integer attribute to `owner`, `default_value` for new elements.
   AttrId add_attribute(KindId owner, std::string_view name, std::int32_t default_value = 0);
 

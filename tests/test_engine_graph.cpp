@@ -140,6 +140,23 @@ TEST_CASE("rollback undoes every change since a checkpoint, nested checkpoints i
   CHECK(g.check_structure().empty());
 }
 
+TEST_CASE("checkpoints opened together are released one at a time") {
+  Roads t;
+  Graph g(t.schema);
+  Id a = g.add(t.city), b = g.add(t.city);
+  auto outer = g.checkpoint();
+  auto inner = g.checkpoint();  // nothing changed since `outer`: the same point
+  CHECK(inner == outer);
+  t.connect(g, a, b);
+  g.release(inner);  // the inner transaction keeps its change...
+  CHECK(g.size() == 3);
+  g.rollback(outer);  // ...and the outer one can still undo it
+  CHECK(g.size() == 2);
+  CHECK(g.id_bound() == 2);
+  g.release(outer);
+  CHECK(g.compact().size() == 2);  // throws while a checkpoint is open
+}
+
 TEST_CASE("check_structure reports a kind mismatch") {
   Roads t;
   Graph g(t.schema);

@@ -32,6 +32,7 @@ namespace {
 
 struct Options {
   std::string surface, output, rules, strategy = "priority", dot_dir, trace, report;
+  std::vector<std::string> check_rules;
   std::uint64_t seed = 0;
   std::size_t attempts = 16;
   loom::pipeline::Closure closure = loom::pipeline::Closure::full;
@@ -141,6 +142,21 @@ void write_partial(const std::filesystem::path& output, const loom::stc::Stc& st
                            dir.string());
 }
 
+/// The names --check-rules gives ('all': every rule loaded), each one loaded.
+std::vector<std::string> checked_rules(const Options& o, const std::vector<loom::engine::Rule>& rules) {
+  std::vector<std::string> names;
+  for (const std::string& name : o.check_rules) {
+    if (name == "all") {
+      for (const auto& r : rules) names.push_back(r.name);
+      continue;
+    }
+    if (std::none_of(rules.begin(), rules.end(), [&](const auto& r) { return r.name == name; }))
+      throw loom::InputError(fmt::format("--check-rules: no rule '{}' is loaded; see 'loom rules list'", name));
+    names.push_back(name);
+  }
+  return names;
+}
+
 int run(const Options& o) {
   loom::hex_format_of(o.output);  // an unwritable format is refused before any work
   loom::QuadSurface surface = loom::read_surface(o.surface);
@@ -148,6 +164,7 @@ int run(const Options& o) {
   auto rules = load_rules(o.rules.empty() ? loom::weave::default_rules_dir().string() : o.rules);
   loom::pipeline::MeshingOptions options;
   options.weave.strategy = parse_strategy(o, rules);
+  options.weave.check_rules = checked_rules(o, rules);
   options.attempts = o.attempts;
   options.closure = o.closure;
   options.database = loom::closure::database_file(loom::weave::default_rules_dir());
@@ -262,6 +279,10 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
   app.add_option("-o,--output", o->output, "hex mesh to write (.vtk .vtu .msh)")->required();
   app.add_option("--rules", o->rules, "directory of *.rule files (default: the shipped rules/)");
   app.add_option("--strategy", o->strategy, "priority (default), random, sequence:RULE,RULE..., or a strategy file");
+  app.add_option("--check-rules", o->check_rules,
+                 "check the STC invariants after every application of these rules (names, or 'all'); a violation "
+                 "rolls the application back and stops with exit 2 naming the rule")
+      ->delimiter(',');
   app.add_option("--seed", o->seed, "seed of the random strategy")->each([o](const std::string&) { o->seed_given = true; });
   app.add_option("--attempts", o->attempts,
                  "weaves to try: when one gives no valid mesh, weave again with the random strategy, seeds 1, 2, ... "

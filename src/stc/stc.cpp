@@ -17,14 +17,16 @@ const StcSchema& StcSchema::get() {
     r.node = s->add_kind("node");
     r.chord = s->add_kind("chord");
     r.sheet = s->add_kind("sheet");
-    r.hex_face = s->add_port(r.hex, "face", 6, r.face);
-    r.face_edge = s->add_port(r.face, "edge", 4, r.edge, PortOrder::cyclic);
-    r.face_node = s->add_port(r.face, "node", 4, r.node, PortOrder::cyclic);
+    // Only a face's cells may be missing (a whisker's open side): invariants 1-5.
+    constexpr auto required = engine::PortPresence::required;
+    r.hex_face = s->add_port(r.hex, "face", 6, r.face, PortOrder::ordered, required);
+    r.face_edge = s->add_port(r.face, "edge", 4, r.edge, PortOrder::cyclic, required);
+    r.face_node = s->add_port(r.face, "node", 4, r.node, PortOrder::cyclic, required);
     r.face_cell = s->add_port(r.face, "cell", 2, r.hex);
-    r.face_chord = s->add_port(r.face, "chord", 1, r.chord);
-    r.edge_node = s->add_port(r.edge, "node", 2, r.node);
-    r.edge_sheet = s->add_port(r.edge, "sheet", 1, r.sheet);
-    r.chord_sheet = s->add_port(r.chord, "sheet", 2, r.sheet);
+    r.face_chord = s->add_port(r.face, "chord", 1, r.chord, PortOrder::ordered, required);
+    r.edge_node = s->add_port(r.edge, "node", 2, r.node, PortOrder::ordered, required);
+    r.edge_sheet = s->add_port(r.edge, "sheet", 1, r.sheet, PortOrder::ordered, required);
+    r.chord_sheet = s->add_port(r.chord, "sheet", 2, r.sheet, PortOrder::ordered, required);
     r.face_boundary = s->add_attribute(r.face, "boundary", -1);
     r.face_layer = s->add_attribute(r.face, "layer", 0);
     r.node_point = s->add_attribute(r.node, "point", -1);

@@ -140,6 +140,9 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   WeaveResult result;
   std::size_t limit = options.max_steps ? options.max_steps : 200 * stc.faces() + 10000;
   engine::Engine eng(stc.graph(), std::move(rules), weave_actions(stc), options.strategy);
+  if (stc::invariant_checks_on() || !options.check_rules.empty())
+    eng.check_after([&stc](const engine::Graph&) { return stc.check_invariants(); },
+                    stc::invariant_checks_on() ? std::vector<std::string>{} : options.check_rules);
   engine::Application app;
   std::deque<Choice> choices;
   const bool backtracking = options.max_backtracks > 0 && options.branching > 1 && options.backtrack_window > 0;
@@ -148,7 +151,6 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   const OpenSides front(stc);
   bool closed_once = false;
   auto after = [&] {
-    stc.debug_check();
     if (options.after_step) options.after_step(app, stc);
     if (!closed_once && front() == 0) {
       closed_once = true;

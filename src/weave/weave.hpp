@@ -27,6 +27,10 @@ struct WeaveOptions {
   std::size_t max_backtracks = 200;
   std::size_t branching = 3;
   std::size_t backtrack_window = 64;
+  /// The rules after whose every application the STC invariants are checked
+  /// (a violation rolls it back and names the rule); all of them when
+  /// stc::invariant_checks_on().
+  std::vector<std::string> check_rules;
   /// Called after every application (trace, pictures, progress).
   std::function<void(const engine::Application&, const stc::Stc&)> after_step;
 };
