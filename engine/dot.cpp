@@ -1,8 +1,14 @@
 #include "engine/dot.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <csignal>
 #include <mutex>
 #include <stdexcept>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <boost/graph/graphviz.hpp>
 #include <fmt/format.h>
@@ -74,20 +80,23 @@ int collect_graphviz_message(char* text) {
   graphviz_messages += text;
   return 0;
 }
-}  // namespace
 
-std::string render_svg(const std::string& dot, const std::string& layout) {
-  // Graphviz keeps global state; one rendering at a time.
-  static std::mutex mutex;
-  std::lock_guard lock(mutex);
+GVC_t* graphviz_context() {
   static GVC_t* gvc = [] {
     agseterrf(collect_graphviz_message);
     agseterr(AGERR);
     return gvContext();
   }();
+  return gvc;
+}
+
+/// Lays out and renders in this process; throws with Graphviz's message.
+std::string render_here(const std::string& dot, const std::string& layout, bool straight_edges) {
+  GVC_t* gvc = graphviz_context();
   graphviz_messages.clear();
   Agraph_t* graph = agmemread(dot.c_str());
   if (!graph) throw std::runtime_error("Graphviz could not parse the DOT text: " + graphviz_messages);
+  if (straight_edges) agattr(graph, AGRAPH, const_cast<char*>("splines"), const_cast<char*>("line"));
   const char* engine = agget(graph, const_cast<char*>("layout"));
   std::string chosen = engine && *engine ? engine : layout;
   if (gvLayout(gvc, graph, chosen.c_str()) != 0) {
@@ -103,6 +112,90 @@ std::string render_svg(const std::string& dot, const std::string& layout) {
   agclose(graph);
   if (rc != 0) throw std::runtime_error("Graphviz could not render SVG");
   return svg;
+}
+
+void write_all(int fd, const std::string& text) {
+  for (std::size_t done = 0; done < text.size();) {
+    ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+struct ChildOutcome {
+  bool rendered = false;
+  bool crashed = false;   ///< killed by a signal
+  std::string text;       ///< the SVG, or what went wrong
+};
+
+/// render_here() in a child process, so that a crash inside Graphviz ends the
+/// child and not the caller; the SVG comes back through a pipe.
+ChildOutcome render_in_child(const std::string& dot, const std::string& layout, bool straight_edges,
+                             unsigned max_seconds) {
+  graphviz_context();  // loaded once, in the parent, and inherited
+  int fds[2];
+  if (::pipe(fds) != 0) throw std::runtime_error("cannot open a pipe to Graphviz");
+  pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw std::runtime_error("cannot start a process for Graphviz");
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    // A crash here must end the child quietly, not run the parent's handlers.
+    for (int sig : {SIGSEGV, SIGABRT, SIGBUS, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
+    // What Graphviz's libraries print as they die (GLib's "Bail out!") is not the user's business.
+    if (int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, STDERR_FILENO);
+    ::alarm(max_seconds);
+    int status = 0;
+    std::string out;
+    try {
+      out = render_here(dot, layout, straight_edges);
+    } catch (const std::exception& e) {
+      out = e.what();
+      status = 1;
+    }
+    write_all(fds[1], out);
+    ::_exit(status);
+  }
+  ::close(fds[1]);
+  ChildOutcome outcome;
+  char buffer[65536];
+  for (;;) {
+    ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    outcome.text.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status)) {
+    outcome.rendered = WEXITSTATUS(status) == 0;
+  } else {
+    outcome.crashed = true;
+    int signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    outcome.text = signal == SIGALRM ? fmt::format("Graphviz took longer than {} s", max_seconds)
+                                     : fmt::format("Graphviz crashed (signal {})", signal);
+  }
+  return outcome;
+}
+}  // namespace
+
+std::string render_svg(const std::string& dot, const std::string& layout, unsigned max_seconds) {
+  // Graphviz keeps global state; one rendering at a time.
+  static std::mutex mutex;
+  std::lock_guard lock(mutex);
+  ChildOutcome first = render_in_child(dot, layout, false, max_seconds);
+  if (first.rendered) return first.text;
+  if (!first.crashed) throw std::runtime_error(first.text);
+  // Graphviz 2.43's spline router is where the crashes are: straight edges avoid it.
+  ChildOutcome again = render_in_child(dot, layout, true, max_seconds);
+  if (again.rendered) return again.text;
+  throw std::runtime_error(first.text + (again.crashed ? ", also with straight edges" : "; with straight edges: " + again.text));
 }
 
 }  // namespace loom::engine

@@ -26,10 +26,14 @@ struct DotStyle {
 /// are the DOT node ids, so dumps of one graph are stable across runs.
 void write_dot(std::ostream& out, const Graph& g, const DotStyle& style = {});
 
-/// Renders DOT text to SVG in-process with Graphviz's gvc library, using the
-/// layout engine named in the graph's "layout" attribute, else `layout`.
-/// Throws std::runtime_error with Graphviz's message on failure.
-std::string render_svg(const std::string& dot, const std::string& layout = "dot");
+/// Renders DOT text to SVG with Graphviz's gvc library, using the layout
+/// engine named in the graph's "layout" attribute, else `layout`. The library
+/// runs in a forked child of this process: Graphviz 2.43 crashes on some
+/// graphs, and a picture must never take the caller down. A layout that
+/// crashes is tried once more with straight edges (splines=line); one that
+/// runs longer than `max_seconds` is stopped. Throws std::runtime_error with
+/// Graphviz's message, the signal or the time on failure.
+std::string render_svg(const std::string& dot, const std::string& layout = "dot", unsigned max_seconds = 60);
 
 /// Escapes a string for a double-quoted DOT attribute value.
 std::string dot_quote(const std::string& s);

@@ -19,6 +19,7 @@ struct Options {
   std::string dot_dir;
   bool json = false;
   bool weld = false;
+  bool no_svg = false;
 };
 
 int run(const Options& o) {
@@ -34,7 +35,9 @@ int run(const Options& o) {
     stc = loom::stc::build_from_hex_mesh(std::get<loom::HexMesh>(mesh));
   }
   auto summary = loom::stc::summarize(stc);
-  std::size_t files = o.dot_dir.empty() ? 0 : loom::stc::write_stc_dot(stc, o.dot_dir);
+  loom::stc::PictureFailures failures;
+  std::size_t files = o.dot_dir.empty() ? 0 : loom::stc::write_stc_dot(stc, o.dot_dir, failures, o.no_svg ? 0 : 4000);
+  if (failures.count) std::cerr << failures.warning() << "\n";
   if (o.json) {
     auto j = loom::stc::to_json(summary);
     j["input"] = surface ? "surface" : "hex mesh";
@@ -53,6 +56,7 @@ loom::cli::Register reg{{"stc", [](CLI::App& app) {
   app.description("Build the STC of a hex mesh (its dual) or of a quad surface (the initial weave) and report it");
   app.add_option("MESH", o->mesh, "hex mesh or quad surface (.obj .off .vtk .vtu .msh)")->required()->check(CLI::ExistingFile);
   app.add_option("--dot", o->dot_dir, "write stc.dot and sheet-K.dot (with .svg) into this directory");
+  app.add_flag("--no-svg", o->no_svg, "write DOT files only, no SVG");
   app.add_flag("--json", o->json, "print the counts as JSON");
   app.add_flag("--weld", o->weld, "merge coincident surface nodes instead of rejecting them");
   return std::function<int()>([o] { return run(*o); });

@@ -36,7 +36,7 @@ struct Options {
   std::uint64_t seed = 0;
   std::size_t attempts = 16;
   loom::pipeline::Closure closure = loom::pipeline::Closure::full;
-  bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false;
+  bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false, no_svg = false;
 };
 
 /// A broken rule is bad input: one line naming file:line:column.
@@ -132,12 +132,13 @@ nlohmann::json report_json(const Options& o, const loom::pipeline::MeshingResult
 
 /// --partial: the hexes woven so far as OUTPUT-stem.partial.EXT, and the STC
 /// with its sheet diagrams in the directory OUTPUT-stem.partial/.
-void write_partial(const std::filesystem::path& output, const loom::stc::Stc& stc) {
+void write_partial(const std::filesystem::path& output, const loom::stc::Stc& stc, loom::stc::PictureFailures& failures,
+                   std::size_t svg_limit) {
   std::filesystem::path mesh = output, dir = output;
   mesh.replace_extension(".partial" + output.extension().string());
   dir.replace_extension(".partial");
   loom::write_hex_mesh(mesh, loom::stc::woven_hexes(stc));
-  loom::stc::write_stc_dot(stc, dir);
+  loom::stc::write_stc_dot(stc, dir, failures, svg_limit);
   std::cerr << fmt::format("partial state: {} (hexes woven so far) and {}/ (STC and sheet diagrams)\n", mesh.string(),
                            dir.string());
 }
@@ -170,13 +171,21 @@ int run(const Options& o) {
   options.database = loom::closure::database_file(loom::weave::default_rules_dir());
   options.fill_caps = loom::fill::default_caps_dir();
 
-  std::string trace;
+  // The trace is written as the weave goes, a line a step, so that a run that
+  // stops halfway (a broken rule, a kill) keeps it. It holds the last attempt.
+  std::ofstream trace;
+  auto restart_trace = [&] {
+    if (o.trace.empty()) return;
+    trace = std::ofstream(o.trace, std::ios::trunc);
+    if (!trace) loom::fail_input(o.trace, "cannot write the trace file", "choose another --trace path");
+  };
+  restart_trace();
   std::optional<loom::weave::StepDumper> steps;
-  if (o.dot_steps) steps.emplace(std::filesystem::path(o.dot_dir) / "steps", true);
+  if (o.dot_steps) steps.emplace(std::filesystem::path(o.dot_dir) / "steps", !o.no_svg);
   bool progress = !o.quiet && ::isatty(STDERR_FILENO);
   auto last = std::chrono::steady_clock::now();
   options.weave.after_step = [&](const loom::engine::Application& a, const loom::stc::Stc& stc) {
-    if (!o.trace.empty()) trace += trace_line(a);
+    if (trace.is_open()) trace << trace_line(a) << std::flush;
     if (steps) steps->dump(a, stc);
     if (progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(250)) {
       last = std::chrono::steady_clock::now();
@@ -185,7 +194,7 @@ int run(const Options& o) {
   };
 
   options.before_attempt = [&](std::size_t, const loom::engine::Strategy&, const loom::weave::WeaveResult&) {
-    trace.clear();
+    restart_trace();
     if (steps) steps->clear();
   };
 
@@ -198,12 +207,14 @@ int run(const Options& o) {
   if (progress) std::cerr << "\r" << std::string(60, ' ') << "\r";
 
   // Diagnostics describe the run whatever its outcome; the mesh is written only on success.
-  if (!o.trace.empty()) loom::write_text_atomically(o.trace, trace);
   if (!o.report.empty())
     loom::write_text_atomically(o.report, report_json(o, result, result.strategy).dump(2) + "\n");
-  if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir);
+  loom::stc::PictureFailures pictures = steps ? steps->picture_failures() : loom::stc::PictureFailures{};
+  const std::size_t svg_limit = o.no_svg ? 0 : 4000;
+  if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir, pictures, svg_limit);
   // The weave's partial state, also when the fill then meshed the surface.
-  if (o.partial && !result.weave.closed) write_partial(o.output, result.stc);
+  if (o.partial && !result.weave.closed) write_partial(o.output, result.stc, pictures, svg_limit);
+  if (pictures.count) std::cerr << pictures.warning() << "\n";
 
   if (!result.combinatorially_valid()) {
     const auto* fail = result.check ? result.check->first_failure() : nullptr;
@@ -290,6 +301,7 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
   app.add_option("--dot", o->dot_dir, "write the final STC and its sheet diagrams (DOT and SVG) into this directory");
   app.add_flag("--dot-steps", o->dot_steps, "also write one picture per rule application into DIR/steps");
+  app.add_flag("--no-svg", o->no_svg, "with --dot or --partial: write DOT files only, no SVG");
   app.add_option("--trace", o->trace, "write one line per rule application to this file");
   app.add_option("--report", o->report, "write a JSON report to this file");
   app.add_flag("--partial", o->partial, "when the weave does not close, write the hexes woven so far and the STC (DOT/SVG) for inspection");

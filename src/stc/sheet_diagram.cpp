@@ -149,7 +149,8 @@ std::string sheet_diagram_dot(const Stc& stc, Id sheet) {
   return DiagramWriter(stc, sheet, loops).write();
 }
 
-std::size_t write_stc_dot(const Stc& stc, const std::filesystem::path& dir, std::size_t svg_limit) {
+std::size_t write_stc_dot(const Stc& stc, const std::filesystem::path& dir, PictureFailures& failures,
+                          std::size_t svg_limit) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) fail_input(dir.string(), "cannot create the DOT directory (" + ec.message() + ")", "choose another --dot DIR");
@@ -158,8 +159,9 @@ std::size_t write_stc_dot(const Stc& stc, const std::filesystem::path& dir, std:
     write_text_atomically(dir / (stem + ".dot"), dot);
     ++written;
     if (elements <= svg_limit) {
-      write_text_atomically(dir / (stem + ".svg"), engine::render_svg(dot));
-      ++written;
+      const std::size_t failed = failures.count;
+      write_svg(dir / (stem + ".svg"), dot, failures);
+      written += failures.count == failed;
     }
   };
 
@@ -172,7 +174,13 @@ std::size_t write_stc_dot(const Stc& stc, const std::filesystem::path& dir, std:
   engine::write_dot(whole, g, style);
   emit("stc", whole.str(), g.size() * 8);  // the whole graph lays out far slower than a sheet
 
-  auto all_loops = trace_loops(stc);
+  std::vector<Loop> all_loops;
+  try {
+    all_loops = trace_loops(stc);
+  } catch (const std::runtime_error& e) {
+    failures.add(dir / "sheet-*.dot", e.what());
+    return written;
+  }
   for (Id sheet : g.members(stc.ids().sheet)) {
     auto loops = loops_of(all_loops, sheet);
     std::string dot = DiagramWriter(stc, sheet, loops).write();

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "src/stc/pictures.hpp"
 #include "src/stc/stc.hpp"
 
 namespace loom::stc {
@@ -17,8 +18,9 @@ namespace loom::stc {
 std::string sheet_diagram_dot(const Stc& stc, Id sheet);
 
 /// Writes stc.dot and sheet-K.dot for every sheet K into `dir` (created if
-/// needed), each also as .svg rendered in-process when its graph has at most
+/// needed), each also as .svg (pictures.hpp) when its graph has at most
 /// `svg_limit` elements. Returns the number of files written.
-std::size_t write_stc_dot(const Stc& stc, const std::filesystem::path& dir, std::size_t svg_limit = 4000);
+std::size_t write_stc_dot(const Stc& stc, const std::filesystem::path& dir, PictureFailures& failures,
+                          std::size_t svg_limit = 4000);
 
 }  // namespace loom::stc

@@ -22,7 +22,7 @@ void StepDumper::emit(const std::string& stem, const std::string& dot) {
   write_text_atomically(dir_ / (stem + ".dot"), dot);
   written_.push_back(dir_ / (stem + ".dot"));
   if (svg_) {
-    write_text_atomically(dir_ / (stem + ".svg"), engine::render_svg(dot));
+    stc::write_svg(dir_ / (stem + ".svg"), dot, failures_);
     written_.push_back(dir_ / (stem + ".svg"));
   }
 }
@@ -31,6 +31,7 @@ void StepDumper::clear() {
   std::error_code ec;
   for (const auto& file : written_) std::filesystem::remove(file, ec);
   written_.clear();
+  failures_ = {};
 }
 
 void StepDumper::dump(const engine::Application& step, const stc::Stc& stc) {
@@ -60,7 +61,16 @@ void StepDumper::dump(const engine::Application& step, const stc::Stc& stc) {
   // Sheets are named by rank, as in `loom stc` and the final diagrams.
   std::size_t rank = 0;
   for (engine::Id sheet : g.members(ids.sheet)) {
-    if (sheets.count(sheet)) emit(fmt::format("step-{:04}-sheet-{}", step.step, rank), stc::sheet_diagram_dot(stc, sheet));
+    if (sheets.count(sheet)) {
+      const std::string stem = fmt::format("step-{:04}-sheet-{}", step.step, rank);
+      std::string diagram;
+      try {
+        diagram = stc::sheet_diagram_dot(stc, sheet);
+      } catch (const std::runtime_error& e) {
+        failures_.add(dir_ / (stem + ".dot"), e.what());
+      }
+      if (!diagram.empty()) emit(stem, diagram);
+    }
     ++rank;
   }
 }

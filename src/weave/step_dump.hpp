@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/engine.hpp"
+#include "src/stc/pictures.hpp"
 #include "src/stc/stc.hpp"
 
 namespace loom::weave {
@@ -19,12 +20,15 @@ public:
   void dump(const engine::Application& step, const stc::Stc& stc);
   /// Removes every file written so far (a weave that starts again).
   void clear();
+  /// The pictures Graphviz could not draw (their DOT files are written).
+  const stc::PictureFailures& picture_failures() const { return failures_; }
 
 private:
   void emit(const std::string& stem, const std::string& dot);
   std::filesystem::path dir_;
   bool svg_;
   std::vector<std::filesystem::path> written_;
+  stc::PictureFailures failures_;
 };
 
 }  // namespace loom::weave

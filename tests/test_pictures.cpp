@@ -1,0 +1,69 @@
+// Pictures never take a run down: Graphviz runs in a child process, a layout
+// that crashes it is retried with straight edges, and what still cannot be
+// drawn is left out with one warning. The trace is written step by step.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "engine/dot.hpp"
+#include "src/stc/pictures.hpp"
+#include "src/weave/weave.hpp"
+#include "tests/support.hpp"
+
+using namespace loom;
+using loom::test::run_cli;
+using loom::test::ScratchDir;
+
+TEST_CASE("a sheet diagram that crashes Graphviz 2.43's spline router is drawn with straight edges") {
+  // A step picture of `loom weave --dot-steps` on randquad 16 --seed 4: `dot -Tsvg` on it
+  // dies of a segmentation fault, and so did loom, in-process.
+  const std::string dot = test::slurp(test::data("graphviz-2.43-crash.dot"));
+  REQUIRE(dot.find("splines=true") != std::string::npos);
+  const std::string svg = engine::render_svg(dot);
+  CHECK(svg.find("<svg") != std::string::npos);
+  CHECK(svg.find("</svg>") != std::string::npos);
+}
+
+TEST_CASE("what Graphviz cannot draw is counted, not written, and named once") {
+  CHECK_THROWS_AS(engine::render_svg("graph { a -- }"), std::runtime_error);
+  CHECK_THROWS_WITH_AS(engine::render_svg("graph { a -- b }", "nosuchlayout"), "Graphviz layout 'nosuchlayout' failed",
+                       std::runtime_error);
+  ScratchDir dir("pictures");
+  stc::PictureFailures failures;
+  stc::write_svg(dir / "bad.svg", "graph { a -- }", failures);
+  stc::write_svg(dir / "good.svg", "graph { a -- b }", failures);
+  CHECK(failures.count == 1);
+  CHECK_FALSE(std::filesystem::exists(dir / "bad.svg"));
+  CHECK(std::filesystem::exists(dir / "good.svg"));
+  CHECK(failures.warning().rfind("loom: warning: 1 picture could not be drawn and is left out (first: ", 0) == 0);
+  CHECK(failures.warning().find("bad.svg: Graphviz could not parse the DOT text") != std::string::npos);
+}
+
+TEST_CASE("--no-svg writes the DOT files only; the trace holds every step before a rule failed") {
+  ScratchDir dir("nosvg");
+  REQUIRE(run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
+  auto r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --dot " +
+                   (dir / "dot").string() + " --dot-steps --no-svg -q");
+  REQUIRE(r.status == 0);
+  std::size_t dots = 0, svgs = 0;
+  for (const auto& f : std::filesystem::recursive_directory_iterator(dir / "dot")) {
+    dots += f.path().extension() == ".dot";
+    svgs += f.path().extension() == ".svg";
+  }
+  CHECK(dots > 20);
+  CHECK(svgs == 0);
+
+  // A rule that breaks the STC once the box is woven: the 20 steps before it are in the trace.
+  std::filesystem::create_directories(dir / "rules");
+  for (auto& f : std::filesystem::directory_iterator(weave::default_rules_dir()))
+    if (f.path().extension() == ".rule") std::filesystem::copy_file(f.path(), dir / "rules" / f.path().filename());
+  test::spit(dir / "rules" / "del.rule",
+             "rule del {\n  priority -100\n  match { v: node where boundary == 1 }\n  rewrite { delete v }\n}\n");
+  r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out2.vtk").string() + " --rules " +
+              (dir / "rules").string() + " --trace " + (dir / "trace.txt").string() + " --attempts 1");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("rule 'del' left ") != std::string::npos);
+  CHECK(test::count_lines(test::slurp(dir / "trace.txt")) == 20);
+  CHECK_FALSE(std::filesystem::exists(dir / "out2.vtk"));
+}
