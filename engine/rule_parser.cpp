@@ -2,6 +2,7 @@
 // (each starts with a keyword or a name); `;` may be used and is ignored.
 #include "engine/rule_parser.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 #include <fmt/format.h>
@@ -108,6 +109,35 @@ private:
     next();
     return true;
   }
+  // Deep nesting would overflow the stack, here and in every pass that later
+  // walks the tree recursively; real rules nest a few levels.
+  static constexpr int max_nesting = 200;
+  [[noreturn]] void fail_nesting(const Token& t) const {
+    throw RuleError(file_, t.pos,
+                    fmt::format("nesting is too deep: more than {} levels of parentheses, operators or 'not' blocks",
+                                max_nesting));
+  }
+  // Counts one level of parser recursion for its lifetime.
+  class Nested {
+  public:
+    explicit Nested(Parser& parser) : parser_(parser) {
+      if (parser_.nesting_ == max_nesting) parser_.fail_nesting(parser_.peek());
+      ++parser_.nesting_;
+    }
+    ~Nested() { --parser_.nesting_; }
+    Nested(const Nested&) = delete;
+    Nested& operator=(const Nested&) = delete;
+
+  private:
+    Parser& parser_;
+  };
+  // Sets e's height from its operands; an operator chain (1+1+...+1) is as deep
+  // as it is long even without parentheses.
+  void set_height(Expr& e, const Pos& pos) const {
+    e.height = 1;
+    for (const Expr& a : e.args) e.height = std::max(e.height, a.height + 1);
+    if (e.height > max_nesting) fail_nesting(Token{Token::Kind::symbol, "", pos});
+  }
   [[noreturn]] void fail(const Token& t, const std::string& expected) const {
     throw RuleError(file_, t.pos, fmt::format("{}, found {}", expected, describe(t)));
   }
@@ -157,6 +187,7 @@ private:
   const Token& previous() const { return tokens_[pos_ > 0 ? pos_ - 1 : 0]; }
 
   ast::Pattern pattern() {
+    Nested nested(*this);
     ast::Pattern p;
     p.pos = peek().pos;
     while (!accept("}")) {
@@ -306,13 +337,17 @@ private:
   }
 
   // --- expressions, loosest first ---------------------------------------
-  Expr expr() { return disjunction(); }
+  Expr expr() {
+    Nested nested(*this);
+    return disjunction();
+  }
   Expr binary(Expr::Op op, Expr a, Expr b, Pos pos) {
     Expr e;
     e.op = op;
     e.pos = pos;
     e.args.push_back(std::move(a));
     e.args.push_back(std::move(b));
+    set_height(e, pos);
     return e;
   }
   Expr disjunction() {
@@ -333,10 +368,12 @@ private:
   }
   Expr negation() {
     if (is("not") && !is("{", 1)) {
+      Nested nested(*this);
       Expr e;
       e.pos = next().pos;
       e.op = Expr::Op::negate;
       e.args.push_back(negation());
+      set_height(e, e.pos);
       return e;
     }
     return comparison();
@@ -370,10 +407,12 @@ private:
   }
   Expr unary() {
     if (is("-")) {
+      Nested nested(*this);
       Expr e;
       e.pos = next().pos;
       e.op = Expr::Op::neg;
       e.args.push_back(unary());
+      set_height(e, e.pos);
       return e;
     }
     return primary();
@@ -401,6 +440,7 @@ private:
       e.args.push_back(expr());
       while (accept(",")) e.args.push_back(expr());
       expect(")");
+      set_height(e, e.pos);
       return e;
     }
     if (t.kind != Token::Kind::identifier) fail(t, "expected a number, a name, 'none', 'max(...)', 'min(...)' or '('");
@@ -421,6 +461,7 @@ private:
   std::vector<Token> tokens_;
   std::string file_;
   std::size_t pos_ = 0;
+  int nesting_ = 0;
 };
 
 }  // namespace
