@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "engine/rule_arithmetic.hpp"
 #include "engine/rule_parser.hpp"
 #include "engine/rule_plan.hpp"
 
@@ -150,6 +151,7 @@ private:
 
   CExpr expr(const ast::Expr& e, int self, int scope, bool pattern) {
     CExpr c;
+    c.pos = e.pos;
     using A = ast::Expr::Op;
     using C = CExpr::Op;
     static const std::map<A, C> ops = {{A::add, C::add}, {A::sub, C::sub}, {A::mul, C::mul}, {A::neg, C::neg},
@@ -203,9 +205,20 @@ private:
       default: {
         c.op = ops.at(e.op);
         for (const auto& a : e.args) c.args.push_back(expr(a, self, scope, pattern));
-        return c;
+        return folded(std::move(c));
       }
     }
+  }
+
+  // An operator on literals becomes a literal, so that a constant expression
+  // that overflows is refused at load, and costs nothing when matching.
+  CExpr folded(CExpr c) const {
+    if (!std::all_of(c.args.begin(), c.args.end(), [](const CExpr& a) { return a.op == CExpr::Op::literal; }))
+      return c;
+    CExpr literal;
+    literal.pos = c.pos;
+    literal.value = apply_operator(r_, c, [&](std::size_t i) { return c.args[i].value; });
+    return literal;
   }
 
   PlanIncidence incidence(const ast::Incidence& inc, int scope) {
