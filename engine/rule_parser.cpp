@@ -26,12 +26,18 @@ struct Token {
   Pos pos;
 };
 
+// A name of any length may be quoted back; 40 characters say which one it is.
+std::string shown(const std::string& text) {
+  constexpr std::size_t limit = 40;
+  return "'" + text.substr(0, limit) + (text.size() > limit ? "...'" : "'");
+}
+
 std::string describe(const Token& t) {
   switch (t.kind) {
     case Token::Kind::end: return "end of file";
     case Token::Kind::number: return "number " + t.text;
-    case Token::Kind::identifier: return "'" + t.text + "'";
-    case Token::Kind::symbol: return "'" + t.text + "'";
+    case Token::Kind::identifier: return shown(t.text);
+    case Token::Kind::symbol: return shown(t.text);
   }
   return t.text;
 }
@@ -73,7 +79,10 @@ std::vector<Token> tokenize(const std::string& text, const std::string& file) {
       for (const char* p : pairs)
         if (text.compare(i, 2, p) == 0) two = true;
       if (!two && std::string("{}()[],:;.=<>+-*").find(c) == std::string::npos)
-        throw RuleError(file, t.pos, fmt::format("unexpected character '{}'", c));
+        throw RuleError(file, t.pos,
+                        std::isprint(static_cast<unsigned char>(c))
+                            ? fmt::format("unexpected character '{}'", c)
+                            : fmt::format("unexpected character '\\x{:02x}'", static_cast<unsigned char>(c)));
       advance(two ? 2 : 1);
     }
     t.text = text.substr(start, i - start);
