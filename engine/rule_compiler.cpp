@@ -221,6 +221,16 @@ private:
     return literal;
   }
 
+  // Written the same way, hence the same element whatever the match.
+  static bool same_expression(const CExpr& a, const CExpr& b) {
+    if (a.op != b.op || a.value != b.value || a.var != b.var || a.index_var != b.index_var || a.offset != b.offset ||
+        a.attr != b.attr || a.port != b.port || a.args.size() != b.args.size())
+      return false;
+    for (std::size_t i = 0; i < a.args.size(); ++i)
+      if (!same_expression(a.args[i], b.args[i])) return false;
+    return true;
+  }
+
   PlanIncidence incidence(const ast::Incidence& inc, int scope) {
     PlanIncidence c;
     c.owner = var(inc.owner, inc.pos, scope);
@@ -373,6 +383,9 @@ private:
         if (ka != kb)
           fail(s.pos, fmt::format("cannot {} a {} with a {}", s.op == S::merge ? "merge" : "identify",
                                   schema_.kind(ka).name, schema_.kind(kb).name));
+        if (same_expression(op.value, op.other))
+          fail(s.pos, fmt::format("rule '{}': {} an element with itself does nothing; name two different elements",
+                                  r_.name, s.op == S::merge ? "merging" : "identifying"));
         if (!s.kind.empty()) {
           auto a = schema_.find_attribute(ka, s.kind);
           if (!a) fail(s.pos, fmt::format("{} has no attribute '{}'", article(schema_.kind(ka).name), s.kind));

@@ -184,8 +184,17 @@ private:
         r.pattern = pattern();
         seen_match = true;
       } else if (accept("rewrite")) {
+        // A rule that only matches leaves `rewrite` out; an empty block is an
+        // unfinished rule, which would be applied to no effect.
+        const Pos at = t.pos;
+        const std::size_t before = r.rewrite.size();
         expect("{");
         while (!accept("}")) statement(r.rewrite);
+        if (r.rewrite.size() == before)
+          throw RuleError(file_, at,
+                          fmt::format("rule '{}' has an empty 'rewrite' block; write its statements, or leave the "
+                                      "block out for a rule that only matches",
+                                      r.name));
       } else if (!accept(";")) {
         fail(t, "expected 'priority', 'order', 'anchor', 'match', 'rewrite' or '}'");
       }

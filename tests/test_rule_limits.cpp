@@ -118,3 +118,29 @@ TEST_CASE("loom weave with a rule whose order overflows exits 2 with one line an
   CHECK(contains(r.err, "cross.rule:15:48: rule 'cross': 999999998000000001 * 999999999 overflows 64-bit integers"));
   CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
 }
+
+TEST_CASE("an empty rewrite block and merging an element into itself are refused at load") {
+  CHECK(compile_error("rule r {\n  match { v: node }\n  rewrite { }\n}\n") ==
+        "bad.rule:3:3: rule 'r' has an empty 'rewrite' block; write its statements, or leave the block out for a "
+        "rule that only matches");
+  CHECK(contains(compile_error("rule r { match { v: node } rewrite { v.boundary = 1 } rewrite { ; } }"),
+                 "bad.rule:1:55: rule 'r' has an empty 'rewrite' block"));
+  // A rule that only matches (no rewrite at all) is how patterns are matched and benchmarked.
+  CHECK(compile_error("rule r { match { v: node } }") == "(no error)");
+
+  const std::string merging = "rule seam2 {\n  match {\n    f: face\n    p12, q: node\n    f.node[0] == p12\n"
+                              "    f.node[1] == q\n  }\n  rewrite {\n    ";
+  CHECK(compile_error(merging + "merge p12 into p12\n  }\n}\n") ==
+        "bad.rule:9:5: rule 'seam2': merging an element with itself does nothing; name two different elements");
+  CHECK(compile_error(merging + "identify f.node[1], f.node[1]\n  }\n}\n") ==
+        "bad.rule:9:5: rule 'seam2': identifying an element with itself does nothing; name two different elements");
+  CHECK(compile_error(merging + "merge p12 into q\n  }\n}\n") == "(no error)");
+  CHECK(compile_error(merging + "identify f.node[0], f.node[1]\n  }\n}\n") == "(no error)");
+
+  test::ScratchDir dir("rule-mistakes");
+  std::ofstream(dir / "self.rule") << merging + "merge p12 into p12\n  }\n}\n";
+  auto r = test::run_cli("rules list " + (dir / "self.rule").string());
+  CHECK(r.status == 2);
+  CHECK(test::count_lines(r.err) == 1);
+  CHECK(contains(r.err, "self.rule:9:5: rule 'seam2': merging an element with itself does nothing"));
+}
