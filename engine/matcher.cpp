@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "engine/rule_arithmetic.hpp"
+
 namespace loom::engine {
 
 namespace {
@@ -10,17 +12,6 @@ namespace {
 int slot_of(const PortSpec& p, long raw) {
   if (p.order == PortOrder::cyclic) return static_cast<int>(((raw % p.arity) + p.arity) % p.arity);
   return raw >= 0 && raw < p.arity ? static_cast<int>(raw) : -1;
-}
-
-bool compare(CExpr::Op op, std::int64_t a, std::int64_t b) {
-  switch (op) {
-    case CExpr::Op::eq: return a == b;
-    case CExpr::Op::ne: return a != b;
-    case CExpr::Op::lt: return a < b;
-    case CExpr::Op::le: return a <= b;
-    case CExpr::Op::gt: return a > b;
-    default: return a >= b;
-  }
 }
 
 }  // namespace
@@ -44,20 +35,7 @@ std::int64_t Matcher::evaluate(const CExpr& e, const Match& m) const {
       int s = slot_of(p, (e.index_var >= 0 ? m.indices[e.index_var] : 0) + e.offset);
       return s < 0 ? no_element : g_.at(el, e.port, static_cast<unsigned>(s));
     }
-    case Op::add: return arg(0) + arg(1);
-    case Op::sub: return arg(0) - arg(1);
-    case Op::mul: return arg(0) * arg(1);
-    case Op::neg: return -arg(0);
-    case Op::max:
-    case Op::min: {
-      std::int64_t v = arg(0);
-      for (std::size_t i = 1; i < e.args.size(); ++i) v = e.op == Op::max ? std::max(v, arg(i)) : std::min(v, arg(i));
-      return v;
-    }
-    case Op::both: return arg(0) && arg(1);
-    case Op::either: return arg(0) || arg(1);
-    case Op::negate: return !arg(0);
-    default: return compare(e.op, arg(0), arg(1));
+    default: return apply_operator(*m.rule, e, arg);
   }
 }
 

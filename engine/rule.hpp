@@ -26,6 +26,7 @@ struct CExpr {
   AttrId attr = 0;
   PortId port = 0;
   std::vector<CExpr> args;
+  ast::Pos pos;          ///< of the operator, for errors while evaluating
   /// Every element variable it reads (to know when it can be evaluated).
   void collect_vars(std::vector<int>& out) const;
 };

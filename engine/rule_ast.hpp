@@ -36,6 +36,7 @@ struct Expr {
   Index index;
   std::vector<Expr> args;
   Pos pos;
+  int height = 1;  ///< nodes on the longest path down to a leaf (the parser bounds it)
 };
 
 /// `a, b: kind where EXPR`

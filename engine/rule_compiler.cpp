@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "engine/rule_arithmetic.hpp"
 #include "engine/rule_parser.hpp"
 #include "engine/rule_plan.hpp"
 
@@ -151,6 +152,7 @@ private:
 
   CExpr expr(const ast::Expr& e, int self, int scope, bool pattern) {
     CExpr c;
+    c.pos = e.pos;
     using A = ast::Expr::Op;
     using C = CExpr::Op;
     static const std::map<A, C> ops = {{A::add, C::add}, {A::sub, C::sub}, {A::mul, C::mul}, {A::neg, C::neg},
@@ -204,9 +206,30 @@ private:
       default: {
         c.op = ops.at(e.op);
         for (const auto& a : e.args) c.args.push_back(expr(a, self, scope, pattern));
-        return c;
+        return folded(std::move(c));
       }
     }
+  }
+
+  // An operator on literals becomes a literal, so that a constant expression
+  // that overflows is refused at load, and costs nothing when matching.
+  CExpr folded(CExpr c) const {
+    if (!std::all_of(c.args.begin(), c.args.end(), [](const CExpr& a) { return a.op == CExpr::Op::literal; }))
+      return c;
+    CExpr literal;
+    literal.pos = c.pos;
+    literal.value = apply_operator(r_, c, [&](std::size_t i) { return c.args[i].value; });
+    return literal;
+  }
+
+  // Written the same way, hence the same element whatever the match.
+  static bool same_expression(const CExpr& a, const CExpr& b) {
+    if (a.op != b.op || a.value != b.value || a.var != b.var || a.index_var != b.index_var || a.offset != b.offset ||
+        a.attr != b.attr || a.port != b.port || a.args.size() != b.args.size())
+      return false;
+    for (std::size_t i = 0; i < a.args.size(); ++i)
+      if (!same_expression(a.args[i], b.args[i])) return false;
+    return true;
   }
 
   PlanIncidence incidence(const ast::Incidence& inc, int scope) {
@@ -361,6 +384,9 @@ private:
         if (ka != kb)
           fail(s.pos, fmt::format("cannot {} a {} with a {}", s.op == S::merge ? "merge" : "identify",
                                   schema_.kind(ka).name, schema_.kind(kb).name));
+        if (same_expression(op.value, op.other))
+          fail(s.pos, fmt::format("rule '{}': {} an element with itself does nothing; name two different elements",
+                                  r_.name, s.op == S::merge ? "merging" : "identifying"));
         if (!s.kind.empty()) {
           auto a = schema_.find_attribute(ka, s.kind);
           if (!a) fail(s.pos, fmt::format("{} has no attribute '{}'", article(schema_.kind(ka).name), s.kind));

@@ -2,6 +2,7 @@
 // (each starts with a keyword or a name); `;` may be used and is ignored.
 #include "engine/rule_parser.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 #include <fmt/format.h>
@@ -25,12 +26,18 @@ struct Token {
   Pos pos;
 };
 
+// A name of any length may be quoted back; 40 characters say which one it is.
+std::string shown(const std::string& text) {
+  constexpr std::size_t limit = 40;
+  return "'" + text.substr(0, limit) + (text.size() > limit ? "...'" : "'");
+}
+
 std::string describe(const Token& t) {
   switch (t.kind) {
     case Token::Kind::end: return "end of file";
     case Token::Kind::number: return "number " + t.text;
-    case Token::Kind::identifier: return "'" + t.text + "'";
-    case Token::Kind::symbol: return "'" + t.text + "'";
+    case Token::Kind::identifier: return shown(t.text);
+    case Token::Kind::symbol: return shown(t.text);
   }
   return t.text;
 }
@@ -72,7 +79,10 @@ std::vector<Token> tokenize(const std::string& text, const std::string& file) {
       for (const char* p : pairs)
         if (text.compare(i, 2, p) == 0) two = true;
       if (!two && std::string("{}()[],:;.=<>+-*").find(c) == std::string::npos)
-        throw RuleError(file, t.pos, fmt::format("unexpected character '{}'", c));
+        throw RuleError(file, t.pos,
+                        std::isprint(static_cast<unsigned char>(c))
+                            ? fmt::format("unexpected character '{}'", c)
+                            : fmt::format("unexpected character '\\x{:02x}'", static_cast<unsigned char>(c)));
       advance(two ? 2 : 1);
     }
     t.text = text.substr(start, i - start);
@@ -107,6 +117,35 @@ private:
     if (!is(text)) return false;
     next();
     return true;
+  }
+  // Deep nesting would overflow the stack, here and in every pass that later
+  // walks the tree recursively; real rules nest a few levels.
+  static constexpr int max_nesting = 200;
+  [[noreturn]] void fail_nesting(const Token& t) const {
+    throw RuleError(file_, t.pos,
+                    fmt::format("nesting is too deep: more than {} levels of parentheses, operators or 'not' blocks",
+                                max_nesting));
+  }
+  // Counts one level of parser recursion for its lifetime.
+  class Nested {
+  public:
+    explicit Nested(Parser& parser) : parser_(parser) {
+      if (parser_.nesting_ == max_nesting) parser_.fail_nesting(parser_.peek());
+      ++parser_.nesting_;
+    }
+    ~Nested() { --parser_.nesting_; }
+    Nested(const Nested&) = delete;
+    Nested& operator=(const Nested&) = delete;
+
+  private:
+    Parser& parser_;
+  };
+  // Sets e's height from its operands; an operator chain (1+1+...+1) is as deep
+  // as it is long even without parentheses.
+  void set_height(Expr& e, const Pos& pos) const {
+    e.height = 1;
+    for (const Expr& a : e.args) e.height = std::max(e.height, a.height + 1);
+    if (e.height > max_nesting) fail_nesting(Token{Token::Kind::symbol, "", pos});
   }
   [[noreturn]] void fail(const Token& t, const std::string& expected) const {
     throw RuleError(file_, t.pos, fmt::format("{}, found {}", expected, describe(t)));
@@ -145,8 +184,17 @@ private:
         r.pattern = pattern();
         seen_match = true;
       } else if (accept("rewrite")) {
+        // A rule that only matches leaves `rewrite` out; an empty block is an
+        // unfinished rule, which would be applied to no effect.
+        const Pos at = t.pos;
+        const std::size_t before = r.rewrite.size();
         expect("{");
         while (!accept("}")) statement(r.rewrite);
+        if (r.rewrite.size() == before)
+          throw RuleError(file_, at,
+                          fmt::format("rule '{}' has an empty 'rewrite' block; write its statements, or leave the "
+                                      "block out for a rule that only matches",
+                                      r.name));
       } else if (!accept(";")) {
         fail(t, "expected 'priority', 'order', 'anchor', 'match', 'rewrite' or '}'");
       }
@@ -157,6 +205,7 @@ private:
   const Token& previous() const { return tokens_[pos_ > 0 ? pos_ - 1 : 0]; }
 
   ast::Pattern pattern() {
+    Nested nested(*this);
     ast::Pattern p;
     p.pos = peek().pos;
     while (!accept("}")) {
@@ -306,13 +355,17 @@ private:
   }
 
   // --- expressions, loosest first ---------------------------------------
-  Expr expr() { return disjunction(); }
+  Expr expr() {
+    Nested nested(*this);
+    return disjunction();
+  }
   Expr binary(Expr::Op op, Expr a, Expr b, Pos pos) {
     Expr e;
     e.op = op;
     e.pos = pos;
     e.args.push_back(std::move(a));
     e.args.push_back(std::move(b));
+    set_height(e, pos);
     return e;
   }
   Expr disjunction() {
@@ -333,10 +386,12 @@ private:
   }
   Expr negation() {
     if (is("not") && !is("{", 1)) {
+      Nested nested(*this);
       Expr e;
       e.pos = next().pos;
       e.op = Expr::Op::negate;
       e.args.push_back(negation());
+      set_height(e, e.pos);
       return e;
     }
     return comparison();
@@ -370,10 +425,12 @@ private:
   }
   Expr unary() {
     if (is("-")) {
+      Nested nested(*this);
       Expr e;
       e.pos = next().pos;
       e.op = Expr::Op::neg;
       e.args.push_back(unary());
+      set_height(e, e.pos);
       return e;
     }
     return primary();
@@ -401,6 +458,7 @@ private:
       e.args.push_back(expr());
       while (accept(",")) e.args.push_back(expr());
       expect(")");
+      set_height(e, e.pos);
       return e;
     }
     if (t.kind != Token::Kind::identifier) fail(t, "expected a number, a name, 'none', 'max(...)', 'min(...)' or '('");
@@ -421,6 +479,7 @@ private:
   std::vector<Token> tokens_;
   std::string file_;
   std::size_t pos_ = 0;
+  int nesting_ = 0;
 };
 
 }  // namespace

@@ -83,6 +83,33 @@ TEST_CASE("scaled Jacobian: cube 1, shear 1/sqrt(1+s^2), degenerate -1") {
   CHECK(scaled_jacobian(m, 0) == -1.0);
 }
 
+TEST_CASE("scaled Jacobian does not depend on the scale: 1e-300 and 1e300 give the values of scale 1") {
+  HexMesh unit = gen::hexgrid(2, 2, 2);
+  unit.points[13] = {1.3, 0.8, 1.1};  // the middle node, off centre: eight different values
+  unit.points[0] = {-0.2, 0.1, 0.0};
+  for (double scale : {1e-300, 1e300}) {
+    CAPTURE(scale);
+    HexMesh scaled = unit;
+    for (Vec3& p : scaled.points) p = scale * p;
+    for (std::size_t h = 0; h < unit.hexes.size(); ++h) {
+      CAPTURE(h);
+      CHECK(scaled_jacobian(unit, h) > 0.3);
+      CHECK(scaled_jacobian(scaled, h) == doctest::Approx(scaled_jacobian(unit, h)).epsilon(1e-12));
+    }
+    const ValidityReport r = check_hex_mesh(scaled);
+    CHECK(r.valid());
+    CHECK(r.quality.min_scaled_jacobian == doctest::Approx(check_hex_mesh(unit).quality.min_scaled_jacobian));
+  }
+  // Edges still too short or too long to measure at all are degenerate.
+  HexMesh tiny = unit;
+  for (Vec3& p : tiny.points) p = 0.0 * p;
+  CHECK(scaled_jacobian(tiny, 0) == -1.0);
+  HexMesh huge = unit;
+  huge.points[huge.hexes[0][1]] = {1e308, 0, 0};
+  huge.points[huge.hexes[0][0]] = {-1e308, 0, 0};
+  CHECK(scaled_jacobian(huge, 0) == -1.0);
+}
+
 TEST_CASE("a structured grid is valid, with and without its boundary surface") {
   const HexMesh m = gen::hexgrid(3, 4, 5);
   const QuadSurface box = gen::box(3, 4, 5);

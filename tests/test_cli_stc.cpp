@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "src/io/hex_io.hpp"
 #include "tests/support.hpp"
 
 using loom::test::run_cli;
@@ -22,7 +23,48 @@ nlohmann::json stc_json(const fs::path& mesh) {
   return nlohmann::json::parse(r.out);
 }
 
+// Hexes of the unit cube at x, y, z, numbered on a 3 x 3 x 4 lattice of points.
+loom::HexMesh lattice_hexes(const std::vector<std::array<int, 3>>& cubes) {
+  loom::HexMesh m;
+  for (int z = 0; z < 4; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 3; ++x) m.points.push_back({double(x), double(y), double(z)});
+  auto id = [](int x, int y, int z) { return static_cast<std::uint32_t>(x + 3 * y + 9 * z); };
+  for (auto [x, y, z] : cubes)
+    m.hexes.push_back({id(x, y, z), id(x + 1, y, z), id(x + 1, y + 1, z), id(x, y + 1, z), id(x, y, z + 1),
+                       id(x + 1, y, z + 1), id(x + 1, y + 1, z + 1), id(x, y + 1, z + 1)});
+  return m;
+}
+
 }  // namespace
+
+TEST_CASE("loom stc refuses a hex mesh that fails a combinatorial criterion, naming it (exit 2)") {
+  ScratchDir dir("stc-invalid");
+  loom::HexMesh along_edge = lattice_hexes({{0, 0, 0}, {1, 1, 0}});
+  loom::HexMesh face_thrice = lattice_hexes({{0, 0, 0}, {0, 0, 1}, {0, 0, 1}});
+  loom::HexMesh degenerate = lattice_hexes({{0, 0, 0}});
+  degenerate.hexes[0][6] = degenerate.hexes[0][5];
+  loom::HexMesh inverted = lattice_hexes({{0, 0, 0}});  // only criterion 7 fails: it has an STC
+  std::swap(inverted.hexes[0][1], inverted.hexes[0][3]);
+  std::swap(inverted.hexes[0][5], inverted.hexes[0][7]);
+  const std::pair<loom::HexMesh, std::string> cases[] = {
+      {along_edge, "criterion 4 (manifold) fails: around edge"},
+      {face_thrice, "criterion 2 (faces in one or two hexes) fails: hexes 1 and 2 are the same hex"},
+      {degenerate, "criterion 1 (distinct nodes) fails: hex 0 uses node"},
+  };
+  for (const auto& [mesh, expected] : cases) {
+    CAPTURE(expected);
+    loom::write_hex_mesh(dir / "bad.vtk", mesh);
+    auto r = run_cli("stc " + (dir / "bad.vtk").string() + " --dot " + (dir / "dot").string());
+    CHECK(r.status == 2);
+    CHECK(loom::test::count_lines(r.err) == 1);
+    CHECK(r.err.rfind("loom: error: " + (dir / "bad.vtk").string() + ": not a valid hex mesh", 0) == 0);
+    CHECK(r.err.find(expected) != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "dot"));
+  }
+  loom::write_hex_mesh(dir / "inverted.vtk", inverted);
+  CHECK(run_cli("stc " + (dir / "inverted.vtk").string()).status == 0);
+}
 
 TEST_CASE("loom stc reports hexes, sheets and chords of a hex grid") {
   ScratchDir dir("stc");

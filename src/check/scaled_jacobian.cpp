@@ -1,5 +1,5 @@
 // Criterion 7 and the scaled Jacobian itself (Verdict's corner form).
-#include <cfloat>
+#include <algorithm>
 #include <cmath>
 
 #include "src/check/criteria.hpp"
@@ -11,6 +11,18 @@ namespace {
 /// VTK order); det[e1,e2,e3] > 0 at every corner of a positively oriented hex.
 constexpr std::array<std::array<int, 3>, 8> kCornerEdges{
     {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}}};
+
+/// `e` scaled to length 1; false for a zero-length or non-finite edge. Dividing
+/// by the largest component first keeps the squares from overflowing (edges of
+/// 1e300) or underflowing (1e-300), so the value does not depend on the scale.
+bool normalize(Vec3& e) {
+  const double largest = std::max({std::abs(e[0]), std::abs(e[1]), std::abs(e[2])});
+  if (!(largest > 0) || !std::isfinite(largest)) return false;
+  for (double& x : e) x /= largest;
+  const double length = norm(e);  // in [1, sqrt(3)]
+  for (double& x : e) x /= length;
+  return true;
+}
 }  // namespace
 
 double scaled_jacobian(const HexMesh& mesh, std::size_t hex) {
@@ -21,10 +33,9 @@ double scaled_jacobian(const HexMesh& mesh, std::size_t hex) {
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3& p = mesh.points[nodes[corner]];
     const auto& n = kCornerEdges[corner];
-    const Vec3 e1 = mesh.points[nodes[n[0]]] - p, e2 = mesh.points[nodes[n[1]]] - p, e3 = mesh.points[nodes[n[2]]] - p;
-    const double l1 = dot(e1, e1), l2 = dot(e2, e2), l3 = dot(e3, e3);
-    if (!(l1 > DBL_MIN && l2 > DBL_MIN && l3 > DBL_MIN)) return -1.0;  // zero-length or non-finite edge
-    const double value = dot(e1, cross(e2, e3)) / std::sqrt(l1 * l2 * l3);
+    Vec3 e1 = mesh.points[nodes[n[0]]] - p, e2 = mesh.points[nodes[n[1]]] - p, e3 = mesh.points[nodes[n[2]]] - p;
+    if (!normalize(e1) || !normalize(e2) || !normalize(e3)) return -1.0;
+    const double value = dot(e1, cross(e2, e3));
     if (!std::isfinite(value)) return -1.0;
     worst = std::min(worst, value);
   }

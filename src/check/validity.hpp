@@ -44,7 +44,8 @@ struct ValidityReport {
 std::string criterion_name(int number);
 
 /// Scaled Jacobian of one hex: minimum over the 8 corners (Verdict's corner
-/// edge triples, VTK order) of det[e1,e2,e3]/(|e1||e2||e3|); -1 for a corner
+/// edge triples, VTK order) of det[e1,e2,e3]/(|e1||e2||e3|), computed on unit
+/// edge vectors so that it does not depend on the scale; -1 for a corner
 /// with a zero-length or non-finite edge, and for a hex with a node out of range.
 double scaled_jacobian(const HexMesh& mesh, std::size_t hex);
 

@@ -10,6 +10,7 @@
 #include "src/io/hex_io.hpp"
 #include "src/io/mesh_format.hpp"
 #include "src/io/surface_io.hpp"
+#include "src/io/text_scanner.hpp"
 #include "src/util/error.hpp"
 
 namespace {
@@ -42,14 +43,14 @@ int parse_size(const loom::gen::GeneratorKind& kind, const std::string& param, c
   int value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size())
-    loom::fail_input("gen " + kind.name, fmt::format("{} must be a whole number, got '{}'", param, text),
+    loom::fail_input("gen " + kind.name, fmt::format("{} must be a whole number, got {}", param, loom::quote_token(text)),
                      fmt::format("usage: loom gen {} -o FILE", loom::gen::usage(kind)));
   return value;
 }
 
 int run(Options o) {
   const auto* kind = loom::gen::find_generator_kind(o.kind);
-  if (!kind) loom::fail_input("gen", fmt::format("unknown kind '{}'", o.kind), "choose one of " + kinds_list());
+  if (!kind) loom::fail_input("gen", fmt::format("unknown kind {}", loom::quote_token(o.kind)), "choose one of " + kinds_list());
   fill_named_sizes(*kind, o);
   if (o.args.size() != kind->params.size())
     loom::fail_input("gen " + kind->name,

@@ -5,12 +5,14 @@
 
 #include <fmt/format.h>
 
+#include "src/check/validity.hpp"
 #include "src/cli/command.hpp"
 #include "src/io/any_mesh.hpp"
 #include "src/mesh/surface_validation.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/sheet_diagram.hpp"
 #include "src/stc/summary.hpp"
+#include "src/util/error.hpp"
 
 namespace {
 
@@ -22,6 +24,19 @@ struct Options {
   bool no_svg = false;
 };
 
+// The dual is only defined for a cell complex: a corrupt mesh (a face in three
+// hexes, a degenerate hex, hexes meeting along an edge only) would break the
+// construction or the loop tracing. Geometry (criterion 7) does not matter here.
+void require_combinatorially_valid(const loom::HexMesh& mesh, const std::string& file) {
+  const loom::ValidityReport report = loom::check_hex_mesh(mesh);
+  if (report.combinatorial_valid()) return;
+  const loom::CriterionResult& failed = *report.first_failure();
+  loom::fail_input(file,
+                   fmt::format("not a valid hex mesh, so it has no STC: criterion {} ({}) fails: {}", failed.number,
+                               failed.name, failed.detail),
+                   fmt::format("run 'loom check {}' to see every criterion, and fix the mesh", file));
+}
+
 int run(const Options& o) {
   auto mesh = loom::read_surface_or_hex_mesh(o.mesh);
   bool surface = std::holds_alternative<loom::QuadSurface>(mesh);
@@ -32,6 +47,7 @@ int run(const Options& o) {
     checked = loom::validate_surface(s, o.mesh, {.weld = o.weld});
     stc = loom::stc::build_from_surface(s);
   } else {
+    require_combinatorially_valid(std::get<loom::HexMesh>(mesh), o.mesh);
     stc = loom::stc::build_from_hex_mesh(std::get<loom::HexMesh>(mesh));
   }
   auto summary = loom::stc::summarize(stc);

@@ -1,5 +1,6 @@
 // The `loom` command line: parses, dispatches to a subcommand, and turns every
-// failure into one clear line on stderr and the documented exit status.
+// failure into one clear line on stderr and the documented exit status. Messages
+// quote paths, arguments and file contents, so each goes through one_line().
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -7,6 +8,7 @@
 
 #include "src/cli/command.hpp"
 #include "src/util/error.hpp"
+#include "src/util/one_line.hpp"
 
 namespace loom::cli {
 std::vector<Command>& registry() {
@@ -37,13 +39,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "loom: error: " << e.what() << "; see 'loom --help'\n";
+    std::cerr << "loom: error: " << loom::one_line(e.what()) << "; see 'loom --help'\n";
     return 2;
   } catch (const loom::InputError& e) {
-    std::cerr << "loom: error: " << e.what() << "\n";
+    std::cerr << "loom: error: " << loom::one_line(e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "loom: internal error: " << e.what() << "; please report it with the input\n";
+    std::cerr << "loom: internal error: " << loom::one_line(e.what()) << "; please report it with the input\n";
     return 1;
   }
 }

@@ -53,13 +53,13 @@ Cap read_cap(const std::filesystem::path& file) {
     if (keyword == "even") {
       std::string_view e = in.token_on_line();
       auto k = edge_index(e);
-      if (!k) in.fail(fmt::format("'even {}': not an edge of the quad", e), "write ab, bc, cd or da");
+      if (!k) in.fail(fmt::format("'even {}': not an edge of the quad", printable(e.substr(0, 40))), "write ab, bc, cd or da");
       cap.even_edge = *k;
       have_even = true;
     } else if (keyword == "node") {
       std::string name(in.token_on_line());
       if (name.size() < 2 || name[0] != 'i' || inside.count(name))
-        in.fail(fmt::format("'{}' is not a new inside node", name), "write 'node iN X Y Z' with a name not used above");
+        in.fail(fmt::format("{} is not a new inside node", quote_token(name)), "write 'node iN X Y Z' with a name not used above");
       Vec3 p = in.point(name);
       inside.emplace(name, static_cast<std::uint32_t>(cap.inside.size()));
       cap.inside.push_back(p);
@@ -69,16 +69,16 @@ Cap read_cap(const std::filesystem::path& file) {
         std::string_view s = in.token_on_line();
         auto r = parse_role(s, inside);
         if (!r)
-          in.fail(fmt::format("'{}' is not a cap node", s),
+          in.fail(fmt::format("{} is not a cap node", quote_token(s)),
                   "use a role (a_t, b_m, Mab, Wbc, Mdiag, Gd0, ...) or a node declared above; a hex has 8");
         role = *r;
       }
       cap.hexes.push_back(hex);
     } else {
-      in.fail(fmt::format("unknown keyword '{}'", keyword), "lines are even, node or hex");
+      in.fail(fmt::format("unknown keyword {}", quote_token(keyword)), "lines are even, node or hex");
     }
     if (auto extra = in.token_on_line(); !extra.empty())
-      in.fail(fmt::format("unexpected '{}' at the end of the line", extra), "remove it");
+      in.fail(fmt::format("unexpected {} at the end of the line", quote_token(extra)), "remove it");
     in.next_record();
   }
   if (!have_even || cap.hexes.empty()) fail_input(file.string(), "a cap needs an 'even' line and hexes", "see docs/fill.md");

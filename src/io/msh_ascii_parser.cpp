@@ -80,7 +80,8 @@ class MshAsciiParser {
   }
 
   void read_nodes_v2() {
-    std::size_t count = in_.count("the node count");
+    // A node is a tag and three coordinates: at least 8 bytes.
+    std::size_t count = in_.count("the node count", 8);
     mesh_.points.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
       std::int64_t node_tag = tag("a node tag");
@@ -89,8 +90,9 @@ class MshAsciiParser {
   }
 
   void read_nodes_v4() {
-    std::size_t blocks = in_.count("the number of node blocks");
-    std::size_t total = in_.count("the node count");
+    // A block header is four numbers, a node a tag and three coordinates.
+    std::size_t blocks = in_.count("the number of node blocks", 8);
+    std::size_t total = in_.count("the node count", 8);
     in_.integer("the smallest node tag");
     in_.integer("the largest node tag");
     mesh_.points.reserve(total);
@@ -98,7 +100,7 @@ class MshAsciiParser {
       std::int64_t dimension = in_.integer("a node block's entity dimension");
       in_.integer("a node block's entity tag");
       std::int64_t parametric = in_.integer("a node block's parametric flag");
-      std::size_t count = in_.count("a node block's node count");
+      std::size_t count = in_.count("a node block's node count", 8);
       if (dimension < 0 || dimension > 3 || parametric < 0 || parametric > 1)
         in_.fail(fmt::format("node block {} has entity dimension {} and parametric flag {}", b, dimension, parametric),
                  "fix or re-export the file");
@@ -137,21 +139,22 @@ class MshAsciiParser {
   }
 
   void read_elements_v2() {
-    std::size_t count = in_.count("the element count");
+    // An element is at least a tag, a type, a tag count and a node.
+    std::size_t count = in_.count("the element count", 8);
     for (std::size_t i = 0; i < count; ++i) {
       std::int64_t element_tag = tag("an element tag");
       int line = in_.line();
       std::int64_t code = in_.integer(fmt::format("the type of element {}", element_tag));
       MshElementType type = element_type(code, fmt::format("element {}", element_tag));
-      std::size_t tags = in_.count(fmt::format("the tag count of element {}", element_tag));
+      std::size_t tags = in_.count(fmt::format("the tag count of element {}", element_tag), 2);
       for (std::size_t k = 0; k < tags; ++k) in_.integer(fmt::format("a tag of element {}", element_tag));
       read_element_nodes(element_tag, static_cast<int>(code), type, line);
     }
   }
 
   void read_elements_v4() {
-    std::size_t blocks = in_.count("the number of element blocks");
-    std::size_t total = in_.count("the element count");
+    std::size_t blocks = in_.count("the number of element blocks", 8);
+    std::size_t total = in_.count("the element count", 4);
     in_.integer("the smallest element tag");
     in_.integer("the largest element tag");
     std::size_t read = 0;
@@ -160,7 +163,7 @@ class MshAsciiParser {
       in_.integer("an element block's entity tag");
       std::int64_t code = in_.integer("an element block's element type");
       MshElementType type = element_type(code, fmt::format("element block {}", b));
-      std::size_t count = in_.count("an element block's element count");
+      std::size_t count = in_.count("an element block's element count", 4);
       for (std::size_t i = 0; i < count; ++i) {
         std::int64_t element_tag = tag("an element tag");
         read_element_nodes(element_tag, static_cast<int>(code), type, in_.line());

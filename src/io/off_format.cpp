@@ -16,8 +16,9 @@ RawMesh parse_off(std::string_view text, const std::string& where) {
     in.fail(fmt::format("first word is {}, not OFF", quote_token(header)),
             "an OFF file starts with the line OFF (4D and ST variants are not supported)");
   in.next_record();
-  std::size_t node_count = in.count("the node count");
-  std::size_t face_count = in.count("the face count");
+  // A node line holds at least three numbers, a face line one.
+  std::size_t node_count = in.count("the node count", 6);
+  std::size_t face_count = in.count("the face count", 2);
   in.skip_line();
 
   RawMesh mesh;
@@ -31,7 +32,7 @@ RawMesh parse_off(std::string_view text, const std::string& where) {
   for (std::size_t f = 0; f < face_count; ++f) {
     in.next_record();
     if (in.at_end()) in.fail_truncated(fmt::format("face {} of {}", f, face_count));
-    std::size_t corners = in.count(fmt::format("the node count of face {}", f));
+    std::size_t corners = in.count(fmt::format("the node count of face {}", f), 2);
     RawCell face{CellKind::polygon, {}, {"line", in.line()}, "polygon"};
     for (std::size_t k = 0; k < corners; ++k) face.nodes.push_back(in.integer(fmt::format("node {} of face {}", k, f)));
     mesh.cells.push_back(std::move(face));

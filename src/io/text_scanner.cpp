@@ -1,5 +1,6 @@
 #include "src/io/text_scanner.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -184,11 +185,11 @@ std::int64_t TextScanner::integer(std::string_view what) {
   return value;
 }
 
-std::size_t TextScanner::count(std::string_view what) {
+std::size_t TextScanner::count(std::string_view what, std::size_t min_bytes_each) {
   std::int64_t value = integer(what);
-  // Every counted item needs at least one byte, so a larger count cannot be
-  // honoured; rejecting it here also keeps a corrupt count from allocating.
-  if (value < 0 || static_cast<std::uint64_t>(value) > text_.size())
+  // The last item may end the file without a separator, hence the + 1.
+  const std::size_t bytes_left = text_.size() - std::min(pos_, text_.size());
+  if (value < 0 || static_cast<std::uint64_t>(value) > (bytes_left + 1) / min_bytes_each)
     fail(fmt::format("{} is {}, which this file cannot hold", what, value), "fix the count (the file may be corrupt)");
   return static_cast<std::size_t>(value);
 }

@@ -55,8 +55,10 @@ class TextScanner {
   /// Parse the next token (must exist) as a number; `what` names it in errors.
   double real(std::string_view what);
   std::int64_t integer(std::string_view what);
-  /// A count: a non-negative integer not absurdly larger than the file.
-  std::size_t count(std::string_view what);
+  /// A count of items that each take at least `min_bytes_each` of the bytes
+  /// after it (an ASCII number and its separator: 2), so that a corrupt count
+  /// is refused before anything is allocated for it.
+  std::size_t count(std::string_view what, std::size_t min_bytes_each = 1);
   /// Three coordinates; NaN and inf are rejected naming `node_label`.
   Vec3 point(std::string_view node_label);
 

@@ -70,8 +70,9 @@ struct CellBlock {
 
 // "CELLS n size" / "POLYGONS n size" and their payload, in either layout.
 CellBlock read_cell_block(TextScanner& in, VtkValues& values, std::string_view keyword) {
-  std::size_t first = in.count(fmt::format("the {} count", keyword));
-  std::size_t second = in.count(fmt::format("the {} size", keyword));
+  // Every offset, entry and node is at least one number: 2 bytes in ASCII, more in binary.
+  std::size_t first = in.count(fmt::format("the {} count", keyword), 2);
+  std::size_t second = in.count(fmt::format("the {} size", keyword), 2);
   CellBlock block;
   // 5.x layout: "CELLS offsets connectivity" then OFFSETS and CONNECTIVITY arrays.
   if (in.peek_token() == "OFFSETS") {
@@ -141,7 +142,7 @@ RawMesh parse_legacy_vtk(std::string_view text, const std::string& where) {
     } else if (dataset.empty()) {
       in.fail(fmt::format("expected DATASET, found {}", quote_token(keyword)), "fix the header");
     } else if (keyword == "POINTS") {
-      std::size_t count = in.count("the node count");
+      std::size_t count = in.count("the node count", 6);
       std::string type(in.expect_token("the POINTS data type"));
       values.begin_section();
       mesh.points.resize(count);
@@ -156,7 +157,7 @@ RawMesh parse_legacy_vtk(std::string_view text, const std::string& where) {
     } else if (keyword == "CELLS" && dataset == "UNSTRUCTURED_GRID") {
       unstructured_cells = read_cell_block(in, values, keyword);
     } else if (keyword == "CELL_TYPES" && dataset == "UNSTRUCTURED_GRID") {
-      std::size_t count = in.count("the CELL_TYPES count");
+      std::size_t count = in.count("the CELL_TYPES count", 2);
       values.begin_section();
       cell_types.resize(count);
       for (std::size_t i = 0; i < count; ++i)

@@ -57,14 +57,19 @@ std::vector<std::string_view> array_tokens(const ptree& parent, const std::strin
              "fix or re-export the file");
 }
 
+// `count` items of `per_item` values each. The count comes from the file, so it is
+// compared with the values present, never multiplied (3 * count can wrap).
 template <class Number>
-std::vector<Number> numbers(const std::vector<std::string_view>& tokens, std::size_t expected,
+std::vector<Number> numbers(const std::vector<std::string_view>& tokens, std::size_t count, std::size_t per_item,
                             const std::string& context, const std::string& where) {
-  if (tokens.size() != expected)
-    fail_input(where, fmt::format("{} has {} values, expected {}", context, tokens.size(), expected),
+  if (tokens.size() % per_item != 0 || tokens.size() / per_item != count)
+    fail_input(where,
+               per_item == 1 ? fmt::format("{} has {} values, expected {}", context, tokens.size(), count)
+                             : fmt::format("{} has {} values, expected {} for each of {}", context, tokens.size(),
+                                           per_item, count),
                "the file is inconsistent or truncated; re-export it");
-  std::vector<Number> values(expected);
-  for (std::size_t i = 0; i < expected; ++i) {
+  std::vector<Number> values(tokens.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
     bool ok = false;
     if constexpr (std::is_same_v<Number, double>) {
       ok = parse_real(tokens[i], values[i]);
@@ -94,18 +99,18 @@ void read_piece(const ptree& piece, std::size_t piece_index, RawMesh& mesh, cons
 
   const ptree& points = child(piece, "Points", label, where);
   auto coordinates =
-      numbers<double>(array_tokens(points, "", label + " Points", where), 3 * point_count, label + " Points", where);
+      numbers<double>(array_tokens(points, "", label + " Points", where), point_count, 3, label + " Points", where);
   for (std::size_t i = 0; i < point_count; ++i)
     mesh.points.push_back({coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]});
 
   const ptree& cells = child(piece, "Cells", label, where);
-  auto offsets = numbers<std::int64_t>(array_tokens(cells, "offsets", label + " Cells", where), cell_count,
+  auto offsets = numbers<std::int64_t>(array_tokens(cells, "offsets", label + " Cells", where), cell_count, 1,
                                        label + " offsets", where);
   auto types =
-      numbers<std::int64_t>(array_tokens(cells, "types", label + " Cells", where), cell_count, label + " types", where);
+      numbers<std::int64_t>(array_tokens(cells, "types", label + " Cells", where), cell_count, 1, label + " types", where);
   auto connectivity_tokens = array_tokens(cells, "connectivity", label + " Cells", where);
   auto connectivity =
-      numbers<std::int64_t>(connectivity_tokens, connectivity_tokens.size(), label + " connectivity", where);
+      numbers<std::int64_t>(connectivity_tokens, connectivity_tokens.size(), 1, label + " connectivity", where);
   std::int64_t begin = 0;
   for (std::size_t c = 0; c < cell_count; ++c) {
     std::int64_t end = offsets[c];
@@ -113,7 +118,15 @@ void read_piece(const ptree& piece, std::size_t piece_index, RawMesh& mesh, cons
       fail_input(where, fmt::format("{} offset {} is {}, out of order or past the connectivity", label, c, end),
                  "fix the offsets array");
     std::vector<std::int64_t> nodes(connectivity.begin() + begin, connectivity.begin() + end);
-    for (auto& n : nodes) n += first_point;
+    for (auto& n : nodes) {
+      // Checked here, while the piece's own numbering is known (adding the
+      // offset to a huge index would overflow).
+      if (n < 0 || static_cast<std::uint64_t>(n) >= point_count)
+        fail_input(where, fmt::format("{} cell {} refers to node {}, but the piece has {} points", label, c, n,
+                                      point_count),
+                   "fix the connectivity array");
+      n += first_point;
+    }
     mesh.cells.push_back(
         vtk_cell(static_cast<int>(types[c]), std::move(nodes), {"cell", static_cast<std::int64_t>(mesh.cells.size())}));
     begin = end;
