@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build pkg-config libboost-graph-dev libfmt-dev doctest-dev
           libcli11-dev nlohmann-json3-dev libeigen3-dev libgraphviz-dev graphviz
-          libgmsh-dev gmsh libnauty2-dev)
+          libgmsh-dev gmsh libnauty2-dev liblbfgspp-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

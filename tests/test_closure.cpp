@@ -191,4 +191,8 @@ TEST_CASE("loom weave's pipeline searches a small surface fully when the weave's
   REQUIRE(r.combinatorially_valid());
   CHECK(r.made_by == "searched");
   CHECK(r.mesh->hexes.size() - r.boundary_layer.hexes_added <= 72);
+  // Placement's global untangling leaves none of the 8 hexes <= 0 that moving
+  // one node at a time left.
+  CHECK(r.check->quality.below_zero == 0);
+  CHECK(r.smoothing.global_rounds > 0);
 }

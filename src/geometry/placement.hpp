@@ -12,7 +12,9 @@
 //     untangling and smoothing), by Newton steps with a line search;
 //  2. worst corner: sweeps over the nodes of the worst corners of hexes below
 //     `improve_below`, each raising the least scaled Jacobian around it
-//     without pushing any corner across 0 or 0.2 from above.
+//     without pushing any corner across 0 or 0.2 from above;
+//  3. when hexes <= 0 are left that are not locked: all free nodes moved at
+//     once (untangle.hpp), then phase 2 again, kept when better.
 // Sequential and deterministic. Fixed nodes are never written.
 #include <cstddef>
 #include <vector>
@@ -50,6 +52,9 @@ struct PlacementReport {
   int iterations = 0;           ///< sweeps done, both phases
   int harmonic_iterations = 0;  ///< conjugate-gradient iterations of the start (0: input start)
   int untangle_sweeps = 0, quality_sweeps = 0;
+  /// Rounds of the global untangling (untangle.hpp), run when phases 1 and 2
+  /// leave hexes <= 0 that are not locked (0: not run).
+  int global_rounds = 0;
   double min_before = 0, min_after = 0;                     ///< minimum scaled Jacobian
   double mean_before = 0, mean_after = 0;                   ///< mean scaled Jacobian
   std::size_t below_zero_before = 0, below_zero_after = 0;  ///< hexes <= 0

@@ -1,0 +1,197 @@
+#include "src/geometry/untangle.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+#include <Eigen/Core>
+#include <LBFGS.h>
+
+#include "src/geometry/placement_detail.hpp"
+
+namespace loom::geometry {
+
+namespace {
+
+using detail::kCornerEdges;
+using V3 = Eigen::Vector3d;
+using Vector = Eigen::VectorXd;
+
+/// Below this the regularised terms of inverted corners overflow doubles.
+constexpr double kLeastEps = 1e-8;
+/// Rounds without fewer inverted hexes before the untangling gives up.
+constexpr int kPatience = 100;
+
+/// A hex corner: its node, then the ends of its three edges, right-handed.
+struct Corner {
+  std::uint32_t node[4];
+  std::uint32_t hex;
+};
+
+/// The energy of the free nodes' coordinates, for one eps.
+class Energy {
+public:
+  Energy(const HexMesh& mesh, const std::vector<bool>& fixed, double lambda) : mesh_(mesh), lambda_(lambda) {
+    variable_.assign(mesh.points.size(), -1);
+    for (std::size_t i = 0; i < mesh.points.size(); ++i)
+      if (!fixed[i]) variable_[i] = static_cast<std::int64_t>(free_++);
+    double length = 0;
+    std::size_t edges = 0;
+    for (std::uint32_t h = 0; h < mesh.hexes.size(); ++h)
+      for (int k = 0; k < 8; ++k) {
+        Corner c{{mesh.hexes[h][k], mesh.hexes[h][kCornerEdges[k][0]], mesh.hexes[h][kCornerEdges[k][1]],
+                  mesh.hexes[h][kCornerEdges[k][2]]},
+                 h};
+        for (int e = 1; e < 4; ++e, ++edges) length += (point(c.node[e]) - point(c.node[0])).norm();
+        if (std::any_of(std::begin(c.node), std::end(c.node), [&](std::uint32_t n) { return variable_[n] >= 0; }))
+          corners_.push_back(c);
+      }
+    // One reference length for the whole mesh: the volume term asks every
+    // corner for the volume of a cube corner of that edge.
+    h_ = edges ? length / static_cast<double>(edges) : 1.0;
+  }
+
+  std::size_t variables() const { return 3 * free_; }
+  double eps = 1;
+
+  Vector start() const {
+    Vector x(static_cast<Eigen::Index>(variables()));
+    for (std::size_t i = 0; i < variable_.size(); ++i)
+      if (variable_[i] >= 0) x.segment<3>(3 * variable_[i]) = point(static_cast<std::uint32_t>(i));
+    return x;
+  }
+  void write(const Vector& x, HexMesh& mesh) const {
+    for (std::size_t i = 0; i < variable_.size(); ++i)
+      if (variable_[i] >= 0)
+        for (int d = 0; d < 3; ++d) mesh.points[i][d] = x[3 * variable_[i] + d];
+  }
+
+  double operator()(const Vector& x, Vector& grad) const {
+    grad.setZero(x.size());
+    double total = 0;
+    const double inv_h = 1 / h_, inv_h2 = inv_h * inv_h, inv_h3 = inv_h2 * inv_h;
+    for (const Corner& c : corners_) {
+      const V3 p0 = at(x, c.node[0]);
+      const V3 a = at(x, c.node[1]) - p0, b = at(x, c.node[2]) - p0, d = at(x, c.node[3]) - p0;
+      const V3 bd = b.cross(d), da = d.cross(a), ab = a.cross(b);
+      const double det = a.dot(bd) * inv_h3, trace = (a.squaredNorm() + b.squaredNorm() + d.squaredNorm()) * inv_h2;
+      const double root = std::sqrt(eps * eps + det * det), chi = 0.5 * (det + root), dchi = chi / root;
+      const double chi23 = std::cbrt(chi * chi);
+      total += trace / chi23 + lambda_ * (det * det + 1) / chi;
+      const double d_trace = 1 / chi23;
+      const double d_det = -2.0 / 3.0 * trace / (chi23 * chi) * dchi +
+                           lambda_ * (2 * det / chi - (det * det + 1) * dchi / (chi * chi));
+      const V3 ga = 2 * d_trace * inv_h2 * a + d_det * inv_h3 * bd;
+      const V3 gb = 2 * d_trace * inv_h2 * b + d_det * inv_h3 * da;
+      const V3 gd = 2 * d_trace * inv_h2 * d + d_det * inv_h3 * ab;
+      add(grad, c.node[1], ga);
+      add(grad, c.node[2], gb);
+      add(grad, c.node[3], gd);
+      add(grad, c.node[0], -(ga + gb + gd));
+    }
+    return total;
+  }
+
+  /// The least corner determinant (over h^3) of the corners with a free node.
+  double min_det(const Vector& x) const {
+    double least = detail::kInf;
+    for (const Corner& c : corners_) least = std::min(least, det(x, c));
+    return least;
+  }
+
+  /// Hexes with a corner whose determinant is <= 0 (locked corners included).
+  std::size_t inverted_hexes(const Vector& x) const {
+    std::vector<bool> inverted(mesh_.hexes.size(), false);
+    for (std::uint32_t h = 0; h < mesh_.hexes.size(); ++h)
+      for (int k = 0; k < 8 && !inverted[h]; ++k) {
+        Corner c{{mesh_.hexes[h][k], mesh_.hexes[h][kCornerEdges[k][0]], mesh_.hexes[h][kCornerEdges[k][1]],
+                  mesh_.hexes[h][kCornerEdges[k][2]]},
+                 h};
+        inverted[h] = !(det(x, c) > 0);
+      }
+    return static_cast<std::size_t>(std::count(inverted.begin(), inverted.end(), true));
+  }
+
+  double chi(double det) const { return 0.5 * (det + std::sqrt(eps * eps + det * det)); }
+
+private:
+  V3 point(std::uint32_t n) const { return detail::to_eigen(mesh_.points[n]); }
+  V3 at(const Vector& x, std::uint32_t n) const {
+    return variable_[n] >= 0 ? V3(x.segment<3>(3 * variable_[n])) : point(n);
+  }
+  void add(Vector& grad, std::uint32_t n, const V3& g) const {
+    if (variable_[n] >= 0) grad.segment<3>(3 * variable_[n]) += g;
+  }
+  double det(const Vector& x, const Corner& c) const {
+    const V3 p0 = at(x, c.node[0]);
+    const V3 a = at(x, c.node[1]) - p0, b = at(x, c.node[2]) - p0, d = at(x, c.node[3]) - p0;
+    return a.dot(b.cross(d)) / (h_ * h_ * h_);
+  }
+
+  const HexMesh& mesh_;
+  double lambda_;
+  std::vector<std::int64_t> variable_;  ///< per node: index among the free nodes, -1 when fixed
+  std::size_t free_ = 0;
+  std::vector<Corner> corners_;
+  double h_ = 1;
+};
+
+}  // namespace
+
+UntangleReport untangle(HexMesh& mesh, const std::vector<bool>& fixed, const UntangleOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (fixed.size() != mesh.points.size()) throw std::invalid_argument("untangle: one fixed flag per node is needed");
+  UntangleReport report;
+  Energy energy(mesh, fixed, options.lambda);
+  Vector x = energy.start();
+  report.inverted_before = report.inverted_after = energy.inverted_hexes(x);
+  if (report.inverted_before == 0 || energy.variables() == 0) {
+    report.untangled = report.inverted_before == 0;
+    return report;
+  }
+  LBFGSpp::LBFGSParam<double> param;
+  param.max_iterations = options.max_iterations;
+  param.epsilon = 1e-6;
+  LBFGSpp::LBFGSSolver<double> solver(param);
+
+  // The eps schedule of Garanzha et al.: start where the worst corner is
+  // regularised; then, as each round lowers the energy by a fraction sigma,
+  // ask the worst corner for a (1 - sigma) share of its regularised value.
+  double least = energy.min_det(x);
+  energy.eps = least > 0 ? kLeastEps : std::sqrt(1e-8 + 0.04 * least * least);
+  Vector grad;
+  double previous = energy(x, grad);
+  Vector best = x;
+  int improved = 0;  // the last round that lowered the inverted count
+  for (; report.rounds < options.max_rounds; ++report.rounds) {
+    double value = previous;
+    try {
+      report.iterations += solver.minimize(energy, x, value);
+    } catch (const std::exception&) {
+      // A line search that gave up leaves x at its last trial point: still positions.
+      value = energy(x, grad);
+    }
+    if (!x.allFinite() || !std::isfinite(value)) break;  // eps too small for doubles
+    const std::size_t inverted = energy.inverted_hexes(x);
+    if (inverted < report.inverted_after) {
+      report.inverted_after = inverted;
+      best = x;
+      improved = report.rounds;
+    }
+    if (report.rounds - improved > kPatience) break;
+    least = energy.min_det(x);
+    if (least > 0) break;
+    const double sigma = std::max(1 - value / previous, 0.1);
+    const double mu = (1 - sigma) * energy.chi(least);
+    energy.eps = std::max(least < mu ? 2 * std::sqrt(mu * (mu - least)) : 0.0, kLeastEps);
+    previous = energy(x, grad);
+  }
+  energy.write(best, mesh);
+  report.untangled = energy.min_det(best) > 0;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace loom::geometry
