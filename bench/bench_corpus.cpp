@@ -3,13 +3,15 @@
 // one row per (input, configuration) as CSV and Markdown, with a summary per
 // configuration (closure rate over the random quadrangulations by size band).
 //
-//   bench_corpus [--dir DIR] [--randquad-max F] [--max-steps N] [--timeout S]
-//                [--only TEXT] [--shard K/N]
+//   bench_corpus [--dir DIR] [--rules DIR]... [--randquad-max F] [--max-steps N]
+//                [--timeout S] [--only TEXT,...] [--shard K/N]
 //                [--csv FILE] [--md FILE] [--md-full] [--list]
 //   bench_corpus --merge A.csv B.csv ... [--csv FILE] [--md FILE] [--md-full]
 //
-// Rows are numbered over the whole corpus (inputs in corpus order, then
-// configurations in order); shard K of N runs the rows whose number is
+// Every rule set given by --rules (default: the shipped rules) runs under
+// every configuration; with several, the report lists the runs whose outcome
+// changed between them. Rows are numbered over the whole corpus (inputs in
+// corpus order, then rule sets, then configurations); shard K of N runs the rows whose number is
 // K-1 modulo N, so shards are disjoint, cover the corpus, and merge back into
 // exactly the table a single run writes. Every mesh a run produces is checked
 // again here (check_hex_mesh against the surface, and every scaled Jacobian
@@ -157,14 +159,40 @@ void record_fill(Row& r, const FillOutcome& f) {
     r.note += "; fill: " + f.failure;
 }
 
-Row run_one(const Input& input, const QuadSurface& surface, const Config& config,
-            const std::vector<engine::Rule>& rules, std::size_t max_steps, double timeout) {
+/// A directory of rules and the name rows give it.
+struct RuleSet {
+  std::string name;
+  std::vector<engine::Rule> rules;
+};
+
+/// Named by their directories; by their paths as given when two share a name.
+std::vector<RuleSet> load_rule_sets(const std::vector<std::string>& dirs) {
+  std::vector<std::string> paths = dirs;
+  if (paths.empty()) paths.push_back(weave::default_rules_dir().string());
+  std::vector<std::string> names;
+  for (const auto& p : paths) {
+    fs::path path = fs::path(p).lexically_normal();
+    if (path.filename().empty()) path = path.parent_path();  // "rules/"
+    names.push_back(path.filename().string());
+  }
+  std::vector<RuleSet> sets;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    bool shared = std::count(names.begin(), names.end(), names[i]) > 1;
+    sets.push_back({shared ? paths[i] : names[i], engine::load_rule_dir(paths[i], *stc::StcSchema::get().schema)});
+  }
+  return sets;
+}
+
+Row run_one(const Input& input, const QuadSurface& surface, const Config& config, const RuleSet& set,
+            bool several_sets, std::size_t max_steps, double timeout) {
+  const std::vector<engine::Rule>& rules = set.rules;
   Row r;
   r.input = input.name;
   r.family = input.family;
   r.faces = input.faces;
   r.quads = surface.quads.size();
-  r.config = config.name;
+  r.config = several_sets ? set.name + ":" + config.name : config.name;
+  r.rules = set.name;
   pipeline::MeshingOptions options;
   options.weave.strategy = engine::Strategy::parse(config.strategy);
   options.weave.strategy.seed = config.seed;
@@ -266,10 +294,11 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
 
 struct Options {
   std::string dir, csv, md;
+  std::vector<std::string> rules;
   int randquad_max = 200;
   std::size_t max_steps = 0;
   double timeout = 2;
-  std::string only;
+  std::vector<std::string> only;
   int shard_k = 1, shard_n = 1;
   bool md_full = false, list = false;
   std::vector<std::string> merge;
@@ -283,7 +312,9 @@ Options parse_options(int argc, char** argv) {
   app.add_option("--randquad-max", o.randquad_max, "largest randquad F in the corpus");
   app.add_option("--max-steps", o.max_steps, "rule applications per run at most (0: the library's limit)");
   app.add_option("--timeout", o.timeout, "wall-clock seconds per run at most");
-  app.add_option("--only", o.only, "only inputs or configurations whose name contains TEXT");
+  app.add_option("--rules", o.rules, "a directory of rules; repeat to compare rule sets (default: the shipped rules)");
+  app.add_option("--only", o.only, "only inputs, configurations or rule sets whose name contains one of these")
+      ->delimiter(',');
   app.add_option("--shard", shard, "run only shard K of N (rows by index modulo N), e.g. 3/16");
   app.add_option("--csv", o.csv, "write the table as CSV");
   app.add_option("--md", o.md, "write the summary as Markdown");
@@ -323,25 +354,31 @@ int run(const Options& o) {
 
   auto inputs = corpus(o.randquad_max, o.dir);
   const auto& cfgs = configs();
-  auto selected = [&](std::size_t i, std::size_t c) {
-    bool named = o.only.empty() || inputs[i].name.find(o.only) != std::string::npos ||
-                 cfgs[c].name.find(o.only) != std::string::npos;
-    return named && (i * cfgs.size() + c) % std::size_t(o.shard_n) == std::size_t(o.shard_k - 1);
+  const auto sets = load_rule_sets(o.rules);
+  const std::size_t per_input = sets.size() * cfgs.size();
+  auto number = [&](std::size_t i, std::size_t s, std::size_t c) { return (i * sets.size() + s) * cfgs.size() + c; };
+  auto selected = [&](std::size_t i, std::size_t s, std::size_t c) {
+    bool named = o.only.empty();
+    for (const auto& text : o.only)
+      named = named || inputs[i].name.find(text) != std::string::npos || cfgs[c].name.find(text) != std::string::npos ||
+              sets[s].name.find(text) != std::string::npos;
+    return named && number(i, s, c) % std::size_t(o.shard_n) == std::size_t(o.shard_k - 1);
   };
   if (o.list) {
     for (std::size_t i = 0; i < inputs.size(); ++i)
-      for (std::size_t c = 0; c < cfgs.size(); ++c)
-        if (selected(i, c))
-          std::cout << i * cfgs.size() + c << ' ' << inputs[i].name << ' ' << cfgs[c].name << '\n';
+      for (std::size_t s = 0; s < sets.size(); ++s)
+        for (std::size_t c = 0; c < cfgs.size(); ++c)
+          if (selected(i, s, c))
+            std::cout << number(i, s, c) << ' ' << inputs[i].name << ' ' << sets[s].name << ' ' << cfgs[c].name << '\n';
     return 0;
   }
-  auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
   const auto caps = fill::load_caps(fill::default_caps_dir());
   std::vector<Row> rows;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
-    std::vector<std::size_t> mine;
-    for (std::size_t c = 0; c < cfgs.size(); ++c)
-      if (selected(i, c)) mine.push_back(c);
+    std::vector<std::size_t> mine;  // s * cfgs.size() + c
+    for (std::size_t s = 0; s < sets.size(); ++s)
+      for (std::size_t c = 0; c < cfgs.size(); ++c)
+        if (selected(i, s, c)) mine.push_back(s * cfgs.size() + c);
     if (mine.empty()) continue;
     std::optional<QuadSurface> surface;
     std::optional<FillOutcome> filled;
@@ -351,19 +388,22 @@ int run(const Options& o) {
     } catch (const std::exception& e) {
       error = std::string("error: input: ") + e.what();
     }
-    for (std::size_t c : mine) {
+    for (std::size_t k : mine) {
+      const std::size_t s = k / cfgs.size(), c = k % cfgs.size();
       Row r;
       if (surface) {
-        r = run_one(inputs[i], *surface, cfgs[c], rules, o.max_steps, o.timeout);
+        r = run_one(inputs[i], *surface, cfgs[c], sets[s], sets.size() > 1, o.max_steps, o.timeout);
         if (!r.comb_valid) {
           if (!filled) filled = fill_once(*surface, caps);
           record_fill(r, *filled);
         }
       } else {
-        r.input = inputs[i].name, r.family = inputs[i].family, r.faces = inputs[i].faces, r.config = cfgs[c].name;
+        r.input = inputs[i].name, r.family = inputs[i].family, r.faces = inputs[i].faces;
+        r.config = sets.size() > 1 ? sets[s].name + ":" + cfgs[c].name : cfgs[c].name;
+        r.rules = sets[s].name;
         r.note = error;
       }
-      r.row = i * cfgs.size() + c;
+      r.row = i * per_input + k;
       std::cerr << fmt::format("[{}] {} / {}: {}{} {} hexes, {:.3f} s{}\n", r.row, r.input, r.config,
                                r.closed ? "closed" : "open", r.valid ? " valid" : r.comb_valid ? " comb-valid" : "",
                                r.hexes, r.seconds, r.recheck.starts_with("MISMATCH") ? "  ** " + r.recheck : "");

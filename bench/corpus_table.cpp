@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace loom::bench {
@@ -208,9 +209,9 @@ std::string rows_md(const std::vector<Row>& rows, bool randquad_too) {
   for (const auto& r : rows) {
     if (!randquad_too && r.family == "randquad") continue;
     auto f = r.fields();
-    out += md_row({r.input, std::to_string(r.quads), r.config, f[6], f[7], f[8], f[9], f[10], f[11], f[12],
-                   r.other_rules.empty() ? "-" : r.other_rules, f[14], f[15], r.degeneracies, r.pillows,
-                   f[18].empty() ? "-" : f[18], f[19].empty() ? "-" : f[19], f[20], fmt::format("{:.3f}", r.seconds),
+    out += md_row({r.input, std::to_string(r.quads), r.config, f[7], f[8], f[9], f[10], f[11], f[12], f[13],
+                   r.other_rules.empty() ? "-" : r.other_rules, f[15], f[16], r.degeneracies, r.pillows,
+                   f[19].empty() ? "-" : f[19], f[20].empty() ? "-" : f[20], f[21], fmt::format("{:.3f}", r.seconds),
                    r.recheck.empty() ? "-" : r.recheck});
   }
   return out;
@@ -240,6 +241,51 @@ std::string randquad_md(const std::vector<Row>& rows) {
   return out;
 }
 
+/// How a run ended, for comparing rule sets: the verdict and the hexes.
+std::string outcome(const Row& r) {
+  if (r.note.starts_with("timeout:") || r.note.starts_with("error:")) return stop_cause(r);
+  std::string verdict = r.valid ? "valid 1-7" : r.comb_valid ? "valid 1-6" : r.closed ? "closed, not valid" : "open";
+  return r.comb_valid ? fmt::format("{}, {} hexes", verdict, r.hexes) : verdict;
+}
+
+/// With several rule sets in the table: the (input, configuration) pairs whose
+/// outcome is not the same under every set.
+std::string changes_md(const std::vector<Row>& rows) {
+  std::vector<std::string> sets;
+  for (const auto& r : rows)
+    if (std::find(sets.begin(), sets.end(), r.rules) == sets.end()) sets.push_back(r.rules);
+  if (sets.size() < 2) return {};
+  using Key = std::pair<std::string, std::string>;  // input, configuration without its rule set
+  std::vector<Key> order;
+  std::map<Key, std::map<std::string, const Row*>> runs;
+  for (const auto& r : rows) {
+    const std::string prefix = r.rules + ":";
+    Key key{r.input, r.config.starts_with(prefix) ? r.config.substr(prefix.size()) : r.config};
+    if (!runs.count(key)) order.push_back(key);
+    runs[key][r.rules] = &r;
+  }
+  std::vector<std::string> head = {"input", "config"};
+  head.insert(head.end(), sets.begin(), sets.end());
+  std::string table;
+  std::size_t changed = 0, compared = 0;
+  for (const Key& key : order) {
+    const auto& by_set = runs[key];
+    if (by_set.size() < 2) continue;
+    ++compared;
+    std::vector<std::string> cells = {"`" + key.first + "`", key.second};
+    std::set<std::string> seen;
+    for (const auto& set : sets) {
+      auto it = by_set.find(set);
+      cells.push_back(it == by_set.end() ? "-" : outcome(*it->second));
+      if (it != by_set.end()) seen.insert(cells.back());
+    }
+    if (seen.size() > 1) ++changed, table += md_row(cells);
+  }
+  std::string out = fmt::format("### Outcomes that changed between rule sets\n\n{} of {} runs compared changed",
+                                changed, compared);
+  return out + (changed ? ":\n\n" + md_header(head) + table + "\n" : ".\n\n");
+}
+
 }  // namespace
 
 void write_outputs(std::vector<Row> rows, const std::string& csv, const std::string& md, bool md_full) {
@@ -252,6 +298,8 @@ void write_outputs(std::vector<Row> rows, const std::string& csv, const std::str
   std::string rq = randquad_md(rows);
   if (!rq.empty()) text += "### Random quadrangulations: closed runs per F (of 10 seeds)\n\n" + rq + "\n";
   if (!best.empty()) text += stops_md(rows, best);
+  const std::string changes = changes_md(rows);
+  text += changes;
   text += md_full ? "### Every run\n\n" : "### Per input (randquad rows in the CSV)\n\n";
   text += rows_md(rows, md_full);
   if (!md.empty()) {
@@ -259,7 +307,7 @@ void write_outputs(std::vector<Row> rows, const std::string& csv, const std::str
     if (!out) throw std::runtime_error("bench_corpus: cannot write " + md);
     out << text;
   }
-  std::cout << summary_md(rows);
+  std::cout << summary_md(rows) << changes;
 }
 
 }  // namespace loom::bench

@@ -14,7 +14,7 @@ namespace loom::bench {
 // ---------------------------------------------------------------- rows
 
 inline const std::vector<std::string> kColumns = {
-    "row", "input", "family", "faces", "quads", "config", "closed", "valid", "comb_valid", "hexes", "steps",
+    "row", "input", "family", "faces", "quads", "config", "rules", "closed", "valid", "comb_valid", "hexes", "steps",
     "cross", "seam", "other_rules", "backtracks", "whiskers_left", "degeneracies", "pillows", "min_sj", "mean_sj",
     "below_0_2", "seconds", "recheck", "filled", "fill_hexes", "fill_seconds", "note"};
 
@@ -23,7 +23,8 @@ struct Row {
   std::string input, family;
   int faces = 0;
   std::size_t quads = 0;
-  std::string config;
+  std::string config;  ///< the configuration, prefixed by "RULES:" when a run compares rule sets
+  std::string rules;   ///< the rule set's name (its directory's)
   bool closed = false, valid = false, comb_valid = false;
   std::size_t hexes = 0, steps = 0, cross = 0, seam = 0;
   std::string other_rules;
@@ -43,7 +44,7 @@ struct Row {
   std::vector<std::string> fields() const {
     auto opt = [](const std::optional<double>& v) { return v ? fmt::format("{:.4f}", *v) : std::string(); };
     return {std::to_string(row), input, family, std::to_string(faces), std::to_string(quads), config,
-            closed ? "yes" : "no", valid ? "yes" : "no", comb_valid ? "yes" : "no", std::to_string(hexes),
+            rules, closed ? "yes" : "no", valid ? "yes" : "no", comb_valid ? "yes" : "no", std::to_string(hexes),
             std::to_string(steps), std::to_string(cross), std::to_string(seam), other_rules,
             std::to_string(backtracks), std::to_string(whiskers_left), degeneracies, pillows, opt(min_sj),
             opt(mean_sj), std::to_string(below_0_2), fmt::format("{:.4f}", seconds), recheck,
@@ -68,6 +69,7 @@ struct Row {
     r.faces = int(num());
     r.quads = num();
     r.config = str();
+    r.rules = str();
     r.closed = yes();
     r.valid = yes();
     r.comb_valid = yes();

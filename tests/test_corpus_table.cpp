@@ -57,3 +57,31 @@ TEST_CASE("a row's fill columns survive the CSV, and the summary counts the fill
   CHECK_FALSE(back[1].filled);
   CHECK(text.find("2/2 (100.0%) of randquad (1 runs filled, 0 left without a mesh)") != std::string::npos);
 }
+
+TEST_CASE("with two rule sets, every row names its set and the report lists the runs whose outcome changed") {
+  auto run = [](const std::string& set, int seed, bool closed, bool comb_valid, std::size_t hexes) {
+    bench::Row r = randquad(set + ":priority", seed, closed, comb_valid);
+    r.rules = set;
+    r.hexes = hexes;
+    return r;
+  };
+  // Seed 0: closed by both sets alike; seed 1: only "mine" closes; seed 2: both, in different hex counts.
+  std::vector<bench::Row> rows = {run("shipped", 0, true, true, 40), run("mine", 0, true, true, 40),
+                                  run("shipped", 1, false, false, 0), run("mine", 1, true, true, 52),
+                                  run("shipped", 2, true, true, 60), run("mine", 2, true, true, 58)};
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i].row = i;
+  auto csv = std::filesystem::temp_directory_path() / "loom-test-corpus-table-sets.csv";
+  auto md = std::filesystem::temp_directory_path() / "loom-test-corpus-table-sets.md";
+  bench::write_outputs(rows, csv.string(), md.string(), false);
+  auto back = bench::read_csv(csv.string());
+  std::string text = test::slurp(md);
+  std::filesystem::remove(csv);
+  std::filesystem::remove(md);
+  REQUIRE(back.size() == 6);
+  CHECK(back[1].rules == "mine");
+  CHECK(back[1].config == "mine:priority");
+  CHECK(text.find("2 of 3 runs compared changed") != std::string::npos);
+  CHECK(text.find("| `randquad 8 s1` | priority | open | valid 1-6, 52 hexes |") != std::string::npos);
+  CHECK(text.find("| `randquad 8 s2` | priority | valid 1-6, 60 hexes | valid 1-6, 58 hexes |") != std::string::npos);
+  CHECK(text.find("`randquad 8 s0` | priority") == std::string::npos);
+}
