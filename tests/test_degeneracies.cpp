@@ -41,6 +41,12 @@ std::vector<engine::Rule> shipped(std::initializer_list<const char*> names) {
   return out;
 }
 
+/// A rule of rules/insertions/ (not in the shipped set).
+std::vector<engine::Rule> insertion(const std::string& name) {
+  auto file = weave::default_rules_dir() / "insertions" / (name + ".rule");
+  return engine::compile_rules(test::slurp(file), file.string(), *stc::StcSchema::get().schema);
+}
+
 /// Runs `rules` until none applies; returns the applications by rule name.
 std::map<std::string, std::size_t> run(stc::Stc& s, std::vector<engine::Rule> rules, std::size_t max_steps = 1000) {
   engine::Engine eng(s.graph(), std::move(rules), weave::weave_actions(s), engine::Strategy::parse("priority"));
@@ -318,4 +324,33 @@ TEST_CASE("pillow_improper declines on a valid weave and while whiskers are left
   stc::Stc open = stc::build_from_surface(gen::schneiders());
   CHECK(run(open, shipped({"pillow_improper"})).empty());  // every face a whisker: nothing to part yet
   CHECK(open.hexes() == 0);
+}
+
+TEST_CASE("hex insertions k = 3 along a strip, 4 (trough) and 5 (cup): one hex glued, nothing placed, the weave goes on") {
+  struct Case {
+    const char* rule;
+    QuadSurface surface;
+    std::size_t whiskers_after;  ///< k faces covered, 6 - k made
+  };
+  for (const Case& c : {Case{"strip", gen::box(3, 1, 2), 22}, Case{"trough", gen::box(2, 1, 2), 14},
+                        Case{"cup", gen::box(1, 1, 1), 2}}) {
+    CAPTURE(c.rule);
+    stc::Stc s = stc::build_from_surface(c.surface);
+    const std::size_t nodes = s.graph().size(s.ids().node);
+    picture(s, std::string(c.rule) + "-before");
+    const engine::Id first_new = s.graph().id_bound();
+    engine::Engine eng(s.graph(), insertion(c.rule), weave::weave_actions(s), engine::Strategy::parse("priority"));
+    REQUIRE(eng.step());
+    CHECK(s.check_invariants() == "");
+    picture(s, std::string(c.rule) + "-after", first_new);
+    CHECK(s.hexes() == 1);
+    CHECK(s.whiskers() == c.whiskers_after);
+    CHECK(front_is_closed(s));
+    CHECK(s.graph().size(s.ids().node) == nodes);
+    // The shipped rules close what is left into a valid mesh.
+    run(s, engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema));
+    CHECK(s.whiskers() == 0);
+    CHECK(dualize_and_check(s, c.surface).combinatorial_valid());
+    if (std::string(c.rule) == "cup") CHECK(s.hexes() == 1);  // a seam closed the pocket: the cube itself
+  }
 }
