@@ -1,6 +1,7 @@
 #include "engine/engine.hpp"
 
 #include <algorithm>
+#include <new>
 #include <stdexcept>
 #include <tuple>
 
@@ -229,6 +230,10 @@ bool Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
   try {
     acted = apply_rewrite(g_, m, actions_);
     if (acted) check_application(rules_[r]);
+  } catch (const std::bad_alloc&) {
+    // Out of memory the graph may be half-updated; the run ends without it.
+    g_.set_change_log(nullptr);
+    throw;
   } catch (...) {
     roll_back();
     throw;

@@ -39,6 +39,11 @@ void Graph::drop_last_element() {
 
 void Graph::rollback(Checkpoint c) {
   if (c < undo_base_ || c > undo_base_ + undo_.size()) throw std::logic_error("Graph::rollback: unknown checkpoint");
+  // Nothing to undo leaves the graph, and the caches keyed on its revision, as they are.
+  if (c == undo_base_ + undo_.size()) {
+    while (!open_.empty() && open_.back() > c) open_.pop_back();
+    return;
+  }
   ++revision_;
   auto saved = std::move(open_);
   open_.clear();  // replaying must not record

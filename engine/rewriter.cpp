@@ -1,5 +1,7 @@
 #include "engine/rewriter.hpp"
 
+#include <new>
+
 #include <fmt/format.h>
 
 #include "engine/rule_parser.hpp"
@@ -28,6 +30,8 @@ bool apply_rewrite(Graph& g, Match& m, const Actions& actions) {
       if (!apply_op(g, m, op, actions, eval)) return false;
     } catch (const RuleError&) {
       throw;
+    } catch (const std::bad_alloc&) {
+      throw;  // not the rule's fault: the run is out of memory
     } catch (const std::exception& e) {
       throw RuleError(rule.file, op.pos, fmt::format("rule '{}' failed here: {}", rule.name, e.what()));
     }

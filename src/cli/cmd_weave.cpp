@@ -16,6 +16,7 @@
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_parser.hpp"
 #include "src/cli/command.hpp"
+#include "src/cli/run_budget.hpp"
 #include "src/fill/cap.hpp"
 #include "src/io/hex_io.hpp"
 #include "src/io/mesh_format.hpp"
@@ -37,6 +38,9 @@ struct Options {
   std::size_t attempts = 16;
   loom::pipeline::Closure closure = loom::pipeline::Closure::full;
   bool seed_given = false, dot_steps = false, partial = false, quiet = false, weld = false, no_svg = false;
+  bool progress = false;
+  double max_seconds = 0;
+  std::uint64_t max_memory = 0;
 };
 
 /// A broken rule is bad input: one line naming file:line:column.
@@ -159,6 +163,7 @@ std::vector<std::string> checked_rules(const Options& o, const std::vector<loom:
 }
 
 int run(const Options& o) {
+  loom::cli::RunBudget budget(o.max_seconds, o.max_memory, o.progress);
   loom::hex_format_of(o.output);  // an unwritable format is refused before any work
   loom::QuadSurface surface = loom::read_surface(o.surface);
   loom::validate_surface(surface, o.surface, {.weld = o.weld});
@@ -170,6 +175,7 @@ int run(const Options& o) {
   options.closure = o.closure;
   options.database = loom::closure::database_file(loom::weave::default_rules_dir());
   options.fill_caps = loom::fill::default_caps_dir();
+  options.on_stage = [&](const char* stage) { budget.stage(stage); };
 
   // The trace is written as the weave goes, a line a step, so that a run that
   // stops halfway (a broken rule, a kill) keeps it. It holds the last attempt.
@@ -182,14 +188,18 @@ int run(const Options& o) {
   restart_trace();
   std::optional<loom::weave::StepDumper> steps;
   if (o.dot_steps) steps.emplace(std::filesystem::path(o.dot_dir) / "steps", !o.no_svg);
-  bool progress = !o.quiet && ::isatty(STDERR_FILENO);
+  bool progress = !o.quiet && !o.progress && ::isatty(STDERR_FILENO);
   auto last = std::chrono::steady_clock::now();
   options.weave.after_step = [&](const loom::engine::Application& a, const loom::stc::Stc& stc) {
     if (trace.is_open()) trace << trace_line(a) << std::flush;
     if (steps) steps->dump(a, stc);
-    if (progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(250)) {
+    // Counting whiskers takes a pass over the STC: four times a second at most.
+    if (std::chrono::steady_clock::now() - last > std::chrono::milliseconds(250)) {
       last = std::chrono::steady_clock::now();
-      std::cerr << fmt::format("\rweaving: {} steps, {} hexes, {} whiskers left   ", a.step, stc.hexes(), stc.whiskers());
+      const std::size_t whiskers = stc.whiskers();
+      budget.weaving(a.step, stc.hexes(), whiskers);
+      if (progress)
+        std::cerr << fmt::format("\rweaving: {} steps, {} hexes, {} whiskers left   ", a.step, stc.hexes(), whiskers);
     }
   };
 
@@ -205,6 +215,7 @@ int run(const Options& o) {
     throw rule_error(e);
   }
   if (progress) std::cerr << "\r" << std::string(60, ' ') << "\r";
+  budget.commit();
 
   // Diagnostics describe the run whatever its outcome; the mesh is written only on success.
   if (!o.report.empty())
@@ -314,6 +325,11 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
       ->transform(CLI::CheckedTransformer(closures, CLI::ignore_case));
   app.add_flag_callback("--no-fill", [o] { o->closure = loom::pipeline::Closure::none; }, "the same as --closure none");
   app.add_flag("-q,--quiet", o->quiet, "no progress line");
+  app.add_flag("--progress", o->progress, "a progress line on stderr as each stage starts and every 5 s, also when stderr is not a terminal");
+  app.add_option("--max-seconds", o->max_seconds, "stop the run (status 1, nothing written) after this many seconds")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--max-memory", o->max_memory, "cap the memory the run may allocate, in MB (status 1 when it needs more)")
+      ->check(CLI::PositiveNumber);
   app.add_flag("--weld", o->weld, "merge coincident surface nodes instead of rejecting them");
   return std::function<int()>([o] {
     if (o->dot_steps && o->dot_dir.empty()) throw loom::InputError("--dot-steps needs --dot DIR to write into");

@@ -5,6 +5,7 @@
 #include <exception>
 #include <iostream>
 #include <map>
+#include <new>
 
 #include "src/cli/command.hpp"
 #include "src/util/error.hpp"
@@ -44,6 +45,10 @@ int main(int argc, char** argv) {
   } catch (const loom::InputError& e) {
     std::cerr << "loom: error: " << loom::one_line(e.what()) << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "loom: out of memory: the run needs more than it may use (--max-memory, or the machine's); nothing "
+                 "written; raise --max-memory or mesh a smaller part\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "loom: internal error: " << loom::one_line(e.what()) << "; please report it with the input\n";
     return 1;

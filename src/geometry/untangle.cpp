@@ -1,6 +1,7 @@
 #include "src/geometry/untangle.hpp"
 
 #include <algorithm>
+#include <new>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -169,6 +170,8 @@ UntangleReport untangle(HexMesh& mesh, const std::vector<bool>& fixed, const Unt
     double value = previous;
     try {
       report.iterations += solver.minimize(energy, x, value);
+    } catch (const std::bad_alloc&) {
+      throw;
     } catch (const std::exception&) {
       // A line search that gave up leaves x at its last trial point: still positions.
       value = energy(x, grad);

@@ -94,7 +94,8 @@ void adopt(MeshingResult& r, Candidate&& c, std::string made_by) {
 }
 
 void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine::Rule> rules,
-                const weave::WeaveOptions& options) {
+                const weave::WeaveOptions& options, const std::function<void(const char*)>& on_stage) {
+  if (on_stage) on_stage("weaving");
   r.stc = stc::build_from_surface(surface);
   r.weave = weave::weave(r.stc, std::move(rules), options);
   r.mesh.reset();
@@ -105,6 +106,7 @@ void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine
   r.smoothing = {};
   r.boundary_layer = {};
   if (!r.weave.closed) return;
+  if (on_stage) on_stage("placing nodes");
   try {
     Candidate c;
     c.mesh = stc::to_hex_mesh(r.stc, &c.fixed);
@@ -148,6 +150,7 @@ Candidate placed_candidate(ClosedMesh&& closed, const QuadSurface& surface) {
 
 void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMesh& woven, Resources& res,
                        const MeshingOptions& options) {
+  if (options.on_stage) options.on_stage("closing cavities");
   try {
     const bool fill = options.closure == Closure::full;
     ClosedMesh closed = close_cavities(surface, woven, res.database(), fill ? res.caps() : std::vector<fill::Cap>{},
@@ -173,6 +176,7 @@ void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMe
 /// `fill`); kept if it beats the mesh there is.
 void search_from_surface(MeshingResult& r, const QuadSurface& surface, Resources& res, const MeshingOptions& options,
                          std::size_t expansions, bool fill) {
+  if (options.on_stage) options.on_stage("searching from the surface");
   try {
     closure::ClosureOptions search = options.search;
     search.limits.max_expansions = expansions;
@@ -218,7 +222,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
   std::size_t best_left = SIZE_MAX;
   for (r.attempts = 1;; ++r.attempts) {
     r.strategy = attempt.strategy;
-    weave_once(r, surface, rules, attempt);
+    weave_once(r, surface, rules, attempt, options.on_stage);
     if (r.combinatorially_valid()) break;
     if (options.closure != Closure::none && r.weave.whiskers_left < best_left) {
       best_left = r.weave.whiskers_left;
@@ -244,7 +248,10 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
                           std::clamp<std::size_t>(kExpansionsPerQuad * surface.quads.size(), kSmallFrontExpansions,
                                                   kMostExpansions),
                           options.closure == Closure::full);
-    if (!r.combinatorially_valid() && options.closure == Closure::full) fill_whole_surface(r, surface, res);
+    if (!r.combinatorially_valid() && options.closure == Closure::full) {
+      if (options.on_stage) options.on_stage("filling the surface");
+      fill_whole_surface(r, surface, res);
+    }
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -52,6 +52,9 @@ struct MeshingOptions {
   /// Called before each attempt but the first (a trace starts again), with
   /// the weave of the attempt before it.
   std::function<void(std::size_t attempt, const engine::Strategy&, const weave::WeaveResult& previous)> before_attempt;
+  /// Called as each stage starts: "weaving", "placing nodes", "closing
+  /// cavities", "searching from the surface", "filling the surface" (progress).
+  std::function<void(const char* stage)> on_stage;
   Closure closure = Closure::none;
   /// The database file and the fill's caps directory, read when first needed.
   std::filesystem::path database, fill_caps;

@@ -1,0 +1,65 @@
+// Budgets a user sets on loom weave (--max-seconds, --max-memory) stop the run
+// cleanly, status 1 and one line, nothing written; --progress reports stages
+// when stderr is not a terminal.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "tests/support.hpp"
+
+using loom::test::run_cli;
+using loom::test::ScratchDir;
+
+namespace {
+/// A run with the STC invariant checks off, as a user's (ctest turns them on).
+loom::test::CliResult run_cli_unchecked(const std::string& args) {
+  ::setenv("LOOM_CHECK_INVARIANTS", "0", 1);
+  auto r = run_cli(args);
+  ::setenv("LOOM_CHECK_INVARIANTS", "1", 1);
+  return r;
+}
+}  // namespace
+
+TEST_CASE("--max-seconds stops a long weave with one line naming its stage, and writes nothing") {
+  ScratchDir dir("budget");
+  REQUIRE(run_cli("gen box 30 30 30 -o " + (dir / "box.obj").string()).status == 0);
+  // 27,000 hexes: over a second of weaving, with the invariant checks far more.
+  auto r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() + " --report " +
+                   (dir / "r.json").string() + " --max-seconds 0.3");
+  CHECK(r.status == 1);
+  CHECK(loom::test::count_lines(r.err) == 1);
+  CHECK_MESSAGE(r.err.rfind("loom: stopped at the --max-seconds budget (0.3 s) while weaving (", 0) == 0, r.err);
+  CHECK(r.err.find("nothing written") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
+  CHECK_FALSE(std::filesystem::exists(dir / "r.json"));
+  for (const auto& f : std::filesystem::directory_iterator(dir.path()))  // no temporary left either
+    CHECK(f.path().filename() == "box.obj");
+}
+
+TEST_CASE("--max-memory stops a weave that needs more, with one line and status 1") {
+  ScratchDir dir("memory");
+  REQUIRE(run_cli("gen box 30 30 30 -o " + (dir / "box.obj").string()).status == 0);
+  // The weave of this box peaks near 100 MB.
+  auto r = run_cli_unchecked("weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() +
+                             " --max-memory 60");
+  CHECK(r.status == 1);
+  CHECK(loom::test::count_lines(r.err) == 1);
+  CHECK_MESSAGE(r.err.rfind("loom: out of memory: ", 0) == 0, r.err);
+  CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
+}
+
+TEST_CASE("--progress writes a line as each stage starts, also into a file; bad budgets are refused") {
+  ScratchDir dir("progress");
+  REQUIRE(run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
+  const std::string weave = "weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string();
+  auto r = run_cli(weave + " --progress");
+  CHECK(r.status == 0);
+  CHECK_MESSAGE(r.err.find(" s: weaving (") != std::string::npos, r.err);
+  CHECK(r.err.find(" s: placing nodes\n") != std::string::npos);
+  for (const char* bad : {" --max-seconds 0", " --max-seconds -1", " --max-memory 0", " --max-seconds soon"}) {
+    r = run_cli(weave + bad);
+    CHECK_MESSAGE(r.status == 2, bad);
+    CHECK(loom::test::count_lines(r.err) == 1);
+  }
+}
