@@ -1,5 +1,6 @@
 #include "tests/support.hpp"
 
+#include <cstdlib>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -36,6 +37,16 @@ CliResult run_cli(const std::string& args) {
   else if (WIFSIGNALED(raw)) r.status = 128 + WTERMSIG(raw);
   r.out = slurp(out);
   r.err = slurp(err);
+  return r;
+}
+
+CliResult run_cli_unchecked(const std::string& args) {
+  const char* was = std::getenv("LOOM_CHECK_INVARIANTS");
+  const std::string saved = was ? was : "";
+  ::setenv("LOOM_CHECK_INVARIANTS", "0", 1);
+  CliResult r = run_cli(args);
+  if (was) ::setenv("LOOM_CHECK_INVARIANTS", saved.c_str(), 1);
+  else ::unsetenv("LOOM_CHECK_INVARIANTS");
   return r;
 }
 

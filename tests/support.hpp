@@ -15,6 +15,9 @@ struct CliResult {
 
 /// Runs `build/loom ARGS` through the shell (args are passed verbatim).
 CliResult run_cli(const std::string& args);
+/// run_cli() with the STC invariant checks off, as in a user's run (ctest
+/// turns them on for every rule), so that only what such a run checks is checked.
+CliResult run_cli_unchecked(const std::string& args);
 
 /// A fresh, empty directory under the system temp dir, removed at destruction.
 class ScratchDir {

@@ -3,7 +3,6 @@
 // when stderr is not a terminal.
 #include <doctest/doctest.h>
 
-#include <cstdlib>
 #include <filesystem>
 
 #include "tests/support.hpp"
@@ -11,15 +10,7 @@
 using loom::test::run_cli;
 using loom::test::ScratchDir;
 
-namespace {
-/// A run with the STC invariant checks off, as a user's (ctest turns them on).
-loom::test::CliResult run_cli_unchecked(const std::string& args) {
-  ::setenv("LOOM_CHECK_INVARIANTS", "0", 1);
-  auto r = run_cli(args);
-  ::setenv("LOOM_CHECK_INVARIANTS", "1", 1);
-  return r;
-}
-}  // namespace
+using loom::test::run_cli_unchecked;
 
 TEST_CASE("--max-seconds stops a long weave with one line naming its stage, and writes nothing") {
   ScratchDir dir("budget");

@@ -3,7 +3,6 @@
 // error names the rule that did it, never a rule that ran later.
 #include <doctest/doctest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 
@@ -17,6 +16,7 @@
 
 using namespace loom;
 using loom::test::run_cli;
+using loom::test::run_cli_unchecked;
 using loom::test::ScratchDir;
 
 namespace {
@@ -34,15 +34,6 @@ std::string fingerprint(const stc::Stc& stc) {
     for (engine::AttrId a : kind.attributes) out += std::to_string(g.get(e, a)) + ";";
   }
   return out;
-}
-
-/// Runs `build/loom ARGS` with the STC invariant checks off (ctest turns them
-/// on for every rule), so that only what a user's run checks is checked.
-test::CliResult run_cli_unchecked(const std::string& args) {
-  ::setenv("LOOM_CHECK_INVARIANTS", "0", 1);
-  auto r = run_cli(args);
-  ::setenv("LOOM_CHECK_INVARIANTS", "1", 1);
-  return r;
 }
 }  // namespace
 
