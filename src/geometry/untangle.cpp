@@ -23,7 +23,7 @@ using Vector = Eigen::VectorXd;
 /// Below this the regularised terms of inverted corners overflow doubles.
 constexpr double kLeastEps = 1e-8;
 /// Rounds without fewer inverted hexes before the untangling gives up.
-constexpr int kPatience = 100;
+constexpr int kPatience = 50;
 
 /// A hex corner: its node, then the ends of its three edges, right-handed.
 struct Corner {

@@ -19,7 +19,7 @@
 namespace loom::geometry {
 
 struct UntangleOptions {
-  int max_rounds = 1000;      ///< eps updates
+  int max_rounds = 500;       ///< eps updates
   int max_iterations = 200;   ///< L-BFGS iterations a round
   double lambda = 1.0;        ///< weight of the volume term against the shape term
 };
