@@ -146,8 +146,12 @@ ChildOutcome render_in_child(const std::string& dot, const std::string& layout, 
     ::close(fds[0]);
     // A crash here must end the child quietly, not run the parent's handlers.
     for (int sig : {SIGSEGV, SIGABRT, SIGBUS, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
-    // What Graphviz's libraries print as they die (GLib's "Bail out!") is not the user's business.
-    if (int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, STDERR_FILENO);
+    // What Graphviz's libraries print as they die (GLib's "Bail out!", on
+    // stdout) is not the user's business; the SVG comes back through the pipe.
+    if (int null = ::open("/dev/null", O_WRONLY); null >= 0) {
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+    }
     ::alarm(max_seconds);
     int status = 0;
     std::string out;
