@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what Loom needs from Debian (only what is missing), then configures
-# and builds into build/. Used by the README's two commands and by .ci/run.
+# and builds into build/ (or $LOOM_BUILD_DIR). Used by the README's two commands,
+# by .ci/run and by scripts/sanitize.sh (which builds into build-san/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -19,5 +20,6 @@ if ((${#missing[@]})); then
 fi
 
 # Extra cmake arguments pass through.
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE="${LOOM_BUILD_TYPE:-RelWithDebInfo}" "$@" >/dev/null
-cmake --build build --parallel "$(nproc)"
+build="${LOOM_BUILD_DIR:-build}"
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${LOOM_BUILD_TYPE:-RelWithDebInfo}" "$@" >/dev/null
+cmake --build "$build" --parallel "$(nproc)"
