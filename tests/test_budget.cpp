@@ -52,6 +52,9 @@ TEST_CASE("--progress writes a line as each stage starts, also into a file; bad 
   CHECK(r.status == 0);
   CHECK_MESSAGE(r.err.find(" s: weaving (") != std::string::npos, r.err);
   CHECK(r.err.find(" s: placing nodes\n") != std::string::npos);
+  // Budgets too large to mean anything are no budget, not an overflow.
+  r = run_cli(weave + " --max-seconds 1e300 --max-memory 18446744073709551615");
+  CHECK_MESSAGE(r.status == 0, r.err);
   for (const char* bad : {" --max-seconds 0", " --max-seconds -1", " --max-memory 0", " --max-seconds soon"}) {
     r = run_cli(weave + bad);
     CHECK_MESSAGE(r.status == 2, bad);

@@ -17,23 +17,17 @@
 #include "src/gen/generators.hpp"
 #include "src/stc/build.hpp"
 #include "src/pipeline/mesh_surface.hpp"
+#include "tests/rule_errors.hpp"
 #include "tests/support.hpp"
 
 using namespace loom;
+using loom::test::compile_error;
 using loom::test::run_cli;
 using loom::test::ScratchDir;
 
 namespace {
 const engine::Schema& schema() { return *stc::StcSchema::get().schema; }
 
-std::string compile_error(const std::string& text) {
-  try {
-    engine::compile_rules(text, "bad.rule", schema());
-  } catch (const engine::RuleError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 void write(const std::filesystem::path& p, const std::string& text) {
   std::ofstream(p) << text;

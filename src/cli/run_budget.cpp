@@ -16,13 +16,17 @@ namespace loom::cli {
 
 namespace {
 constexpr auto kProgressEvery = std::chrono::seconds(5);
+constexpr double kLongestSeconds = 1e9;  // 30 years
 }  // namespace
 
 RunBudget::RunBudget(double max_seconds, std::uint64_t max_megabytes, bool progress_lines)
     : max_seconds_(max_seconds), progress_lines_(progress_lines) {
+  // Past these a limit is no limit (and the arithmetic below would overflow).
+  if (max_seconds_ > kLongestSeconds) max_seconds_ = 0;
+  if (max_megabytes > (RLIM_INFINITY >> 20)) max_megabytes = 0;
   if (max_megabytes > 0) {
     rlimit cap{};
-    cap.rlim_cur = cap.rlim_max = static_cast<rlim_t>(max_megabytes) * 1024 * 1024;
+    cap.rlim_cur = cap.rlim_max = static_cast<rlim_t>(max_megabytes) << 20;
     if (::setrlimit(RLIMIT_DATA, &cap) != 0)
       throw InputError(fmt::format("--max-memory {}: the system refused the limit ({}); give a smaller one",
                                    max_megabytes, std::strerror(errno)));
