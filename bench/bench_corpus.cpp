@@ -63,21 +63,23 @@ struct Input {
 
 struct Config {
   std::string name;
+  /// "": the rule set's own strategy (weave::strategy_of); "random": the same
+  /// with random picks; "no-backtracking": the shipped
+  /// strategies/no_backtracking.strategy; else a spec for Strategy::parse.
   std::string strategy;
   std::uint64_t seed = 0;
-  bool backtracking = true;
   std::size_t attempts = 1;  ///< MeshingOptions::attempts (random restarts)
 };
 
 const std::vector<Config>& configs() {
   static const std::vector<Config> list = {
-      {"priority", "priority", 0, true},
-      {"priority-nobt", "priority", 0, false},
-      {"random-1", "random", 1, true},
-      {"random-2", "random", 2, true},
-      {"seq-seam-cross", "sequence:seam,cross", 0, true},
-      {"seq-cross-seam", "sequence:cross,seam", 0, true},
-      {"portfolio-16", "priority", 0, true, 16},
+      {"priority", "", 0},
+      {"priority-nobt", "no-backtracking", 0},
+      {"random-1", "random", 1},
+      {"random-2", "random", 2},
+      {"seq-seam-cross", "sequence:seam,cross", 0},
+      {"seq-cross-seam", "sequence:cross,seam", 0},
+      {"portfolio-16", "", 0, 16},
   };
   return list;
 }
@@ -163,7 +165,19 @@ void record_fill(Row& r, const FillOutcome& f) {
 struct RuleSet {
   std::string name;
   std::vector<engine::Rule> rules;
+  engine::Strategy strategy;  ///< its own (weave::strategy_of)
 };
+
+engine::Strategy strategy_for(const Config& config, const RuleSet& set) {
+  engine::Strategy s;
+  if (config.strategy.empty()) s = set.strategy;
+  else if (config.strategy == "random") s = set.strategy.with_random_picks();
+  else if (config.strategy == "no-backtracking")
+    s = engine::Strategy::parse((weave::default_rules_dir() / "strategies" / "no_backtracking.strategy").string());
+  else s = weave::strategy_named(config.strategy);
+  s.seed = config.seed;
+  return s;
+}
 
 /// Named by their directories; by their paths as given when two share a name.
 std::vector<RuleSet> load_rule_sets(const std::vector<std::string>& dirs) {
@@ -178,7 +192,8 @@ std::vector<RuleSet> load_rule_sets(const std::vector<std::string>& dirs) {
   std::vector<RuleSet> sets;
   for (std::size_t i = 0; i < paths.size(); ++i) {
     bool shared = std::count(names.begin(), names.end(), names[i]) > 1;
-    sets.push_back({shared ? paths[i] : names[i], engine::load_rule_dir(paths[i], *stc::StcSchema::get().schema)});
+    sets.push_back({shared ? paths[i] : names[i], engine::load_rule_dir(paths[i], *stc::StcSchema::get().schema),
+                    weave::strategy_of(paths[i])});
   }
   return sets;
 }
@@ -194,9 +209,7 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
   r.config = several_sets ? set.name + ":" + config.name : config.name;
   r.rules = set.name;
   pipeline::MeshingOptions options;
-  options.weave.strategy = engine::Strategy::parse(config.strategy);
-  options.weave.strategy.seed = config.seed;
-  if (!config.backtracking) options.weave.max_backtracks = 0;
+  options.weave.strategy = strategy_for(config, set);
   options.attempts = config.attempts;
   options.weave.max_steps = max_steps;
   // A wall-clock guard: a run that explodes is stopped (the row says so).

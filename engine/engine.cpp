@@ -11,32 +11,66 @@
 
 namespace loom::engine {
 
-Engine::Engine(Graph& graph, std::vector<Rule> rules, Actions actions, Strategy strategy)
-    : g_(graph), rules_(std::move(rules)), actions_(std::move(actions)), strategy_(std::move(strategy)),
-      matcher_(graph), state_(rules_.size()), rng_(strategy_.seed) {
+Engine::Engine(Graph& graph, std::vector<Rule> rules, Actions actions, std::uint64_t seed)
+    : g_(graph), rules_(std::move(rules)), actions_(std::move(actions)), matcher_(graph), state_(rules_.size()),
+      rng_(seed) {
   for (const Rule& r : rules_) check_actions(r, actions_, g_.schema());
-  for (std::size_t i = 0; i < rules_.size(); ++i) state_[i].rank = rules_[i].priority;
-  if (strategy_.kind == Strategy::Kind::sequence) {
-    for (auto& s : state_) s.enabled = false;
-    for (std::size_t pos = 0; pos < strategy_.order.size(); ++pos) {
-      auto it = std::find_if(rules_.begin(), rules_.end(), [&](const Rule& r) { return r.name == strategy_.order[pos]; });
-      if (it == rules_.end())
-        throw std::invalid_argument(fmt::format("strategy names rule '{}', which is not loaded", strategy_.order[pos]));
-      auto& st = state_[static_cast<std::size_t>(it - rules_.begin())];
-      st.enabled = true;
-      st.rank = -static_cast<std::int64_t>(pos);
+  index_relevance();
+}
+
+Engine::Selection Engine::select(StrategyNode::Pick pick, bool all, const std::vector<std::string>& names) {
+  std::vector<std::size_t> chosen;
+  for (const std::string& name : names)
+    if (std::none_of(rules_.begin(), rules_.end(), [&](const Rule& r) { return r.name == name; }))
+      throw std::invalid_argument(fmt::format("no rule '{}' is loaded", name));
+  if (all) {
+    for (std::size_t i = 0; i < rules_.size(); ++i)
+      if (std::find(names.begin(), names.end(), rules_[i].name) == names.end()) chosen.push_back(i);
+  } else {
+    for (const std::string& name : names)
+      chosen.push_back(rule_index(&*std::find_if(rules_.begin(), rules_.end(), [&](const Rule& r) { return r.name == name; })));
+  }
+  SelectionState s;
+  s.random = pick == StrategyNode::Pick::random;
+  if (pick == StrategyNode::Pick::sequence) {
+    for (std::size_t r : chosen) s.tiers.push_back({r});
+  } else {  // by descending priority, ties in load order
+    std::stable_sort(chosen.begin(), chosen.end(), [&](std::size_t a, std::size_t b) { return rules_[a].priority > rules_[b].priority; });
+    for (std::size_t r : chosen) {
+      if (s.tiers.empty() || rules_[s.tiers.back().front()].priority != rules_[r].priority) s.tiers.emplace_back();
+      s.tiers.back().push_back(r);
     }
   }
-  std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < rules_.size(); ++i)
-    if (state_[i].enabled) order.push_back(i);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return state_[a].rank > state_[b].rank; });
-  for (std::size_t i : order) {
-    if (tiers_.empty() || state_[tiers_.back().front()].rank != state_[i].rank) tiers_.emplace_back();
-    tiers_.back().push_back(i);
-  }
-  index_relevance();
-  rescan();
+  selections_.push_back(std::move(s));
+  return selections_.size() - 1;
+}
+
+Engine::Selection Engine::all_by_priority() {
+  if (all_by_priority_ == SIZE_MAX) all_by_priority_ = select(StrategyNode::Pick::priority, true, {});
+  return all_by_priority_;
+}
+
+void Engine::activate(SelectionState& s) {
+  s.active = true;
+  for (const auto& tier : s.tiers)
+    for (std::size_t r : tier) {
+      RuleState& st = state_[r];
+      bool& use = s.random ? st.use_pool : st.use_queue;
+      if (use) continue;
+      const bool other = st.use_pool || st.use_queue;
+      use = true;
+      if (!other) {
+        for (Id a : g_.members(rules_[r].vars[rules_[r].anchor].kind)) offer(r, a);
+        continue;
+      }
+      // Kept up to date for the other pick already: copy its candidates.
+      if (s.random) {
+        auto queue = st.queue;
+        for (; !queue.empty(); queue.pop()) offer(r, queue.top().anchor);
+      } else {
+        for (Id a : std::vector<Id>(st.pool)) offer(r, a);
+      }
+    }
 }
 
 // For each rule, which variables a change (element kind, change kind, port or
@@ -60,15 +94,27 @@ void Engine::index_relevance() {
 
 void Engine::rescan() {
   for (std::size_t r = 0; r < rules_.size(); ++r)
-    if (state_[r].enabled)
+    if (state_[r].use_queue || state_[r].use_pool)
       for (Id a : g_.members(rules_[r].vars[rules_[r].anchor].kind)) offer(r, a);
 }
 
-std::size_t Engine::retry_declined() {
-  auto declined = std::move(declined_);
-  declined_.clear();
-  for (auto [r, anchor] : declined) offer(r, anchor);
-  return declined.size();
+bool Engine::match_at(std::size_t r, Id anchor, Match& m) {
+  const Rule& rule = rules_[r];
+  ++counters_.match_attempts;
+  if (!g_.alive(anchor)) return false;
+  if (rule.tests.empty()) return matcher_.first_at(rule, anchor, m);
+  // A test may change the graph (and undo it): the matches are copied first.
+  std::vector<Match> found;
+  matcher_.each_at(rule, anchor, [&](const Match& one) {
+    found.push_back(one);
+    return true;
+  });
+  for (Match& one : found)
+    if (passes_tests(g_, one, actions_)) {
+      m = std::move(one);
+      return true;
+    }
+  return false;
 }
 
 void Engine::offer(std::size_t r, Id anchor) {
@@ -76,26 +122,29 @@ void Engine::offer(std::size_t r, Id anchor) {
   RuleState& st = state_[r];
   if (!g_.alive(anchor) || g_.kind(anchor) != rule.vars[rule.anchor].kind) return;
   ++counters_.candidates;
-  if (strategy_.kind == Strategy::Kind::random) {
-    if (st.pooled.size() <= anchor) st.pooled.resize(g_.id_bound() + 1024, false);
-    if (!st.pooled[anchor]) st.pooled[anchor] = true, st.pool.push_back(anchor);
-    return;
-  }
+  auto mark = [&](std::vector<bool>& in) {
+    if (in.size() <= anchor) in.resize(g_.id_bound() + 1024, false);
+    const bool fresh = !in[anchor];
+    in[anchor] = true;
+    return fresh;
+  };
+  if (st.use_pool && mark(st.pooled)) st.pool.push_back(anchor);
+  if (!st.use_queue) return;
   if (!rule.order) {  // no key to compute: it is matched once, when chosen
     // Queued at most once: a rule whose turn comes late (a low priority)
     // would otherwise meet every change since as a duplicate.
-    if (st.pooled.size() <= anchor) st.pooled.resize(g_.id_bound() + 1024, false);
-    if (!st.pooled[anchor]) st.pooled[anchor] = true, st.queue.push({0, anchor});
+    if (mark(st.queued)) st.queue.push({0, anchor});
     return;
   }
-  ++counters_.match_attempts;
-  if (!matcher_.first_at(rule, anchor, scratch_)) return;
+  if (!match_at(r, anchor, scratch_)) return;
   st.queue.push({matcher_.evaluate(*rule.order, scratch_), anchor});
 }
 
-bool Engine::step(Application* applied) {
-  for (const auto& tier : tiers_) {
-    if (strategy_.kind == Strategy::Kind::random) {
+bool Engine::step(Selection selection, Application* applied) {
+  SelectionState& s = selections_.at(selection);
+  if (!s.active) activate(s);
+  for (const auto& tier : s.tiers) {
+    if (s.random) {
       if (try_random_tier(tier, applied)) return true;
       continue;
     }
@@ -111,9 +160,8 @@ bool Engine::pop_best(std::size_t r, Entry& entry, Match& m) {
   while (!queue.empty()) {
     entry = queue.top();
     queue.pop();
-    if (!rule.order) state_[r].pooled[entry.anchor] = false;
-    ++counters_.match_attempts;
-    if (!g_.alive(entry.anchor) || !matcher_.first_at(rule, entry.anchor, m)) continue;
+    if (!rule.order) state_[r].queued[entry.anchor] = false;
+    if (!match_at(r, entry.anchor, m)) continue;
     std::int64_t key = rule.order ? matcher_.evaluate(*rule.order, m) : 0;
     if (key > entry.key) {  // its key grew since it was queued: take its new place
       queue.push({key, entry.anchor});
@@ -127,9 +175,9 @@ bool Engine::pop_best(std::size_t r, Entry& entry, Match& m) {
 bool Engine::try_rule_queue(std::size_t r, Application* applied) {
   Entry entry;
   Match m;
-  while (pop_best(r, entry, m))
-    if (apply_rule(r, m, applied)) return true;
-  return false;
+  if (!pop_best(r, entry, m)) return false;
+  apply_rule(r, m, applied);
+  return true;
 }
 
 bool Engine::try_random_tier(const std::vector<std::size_t>& tier, Application* applied) {
@@ -152,25 +200,26 @@ bool Engine::try_random_tier(const std::vector<std::size_t>& tier, Application* 
     st.pool.pop_back();
     st.pooled[anchor] = false;
     Match m;
-    ++counters_.match_attempts;
-    if (!g_.alive(anchor) || !matcher_.first_at(rules_[r], anchor, m)) continue;
-    if (apply_rule(r, m, applied)) return true;
+    if (!match_at(r, anchor, m)) continue;
+    apply_rule(r, m, applied);
+    return true;
   }
 }
 
-std::vector<Match> Engine::choices(std::size_t limit) {
+std::vector<Match> Engine::choices(Selection selection, std::size_t limit) {
+  SelectionState& s = selections_.at(selection);
+  if (!s.active) activate(s);
   std::vector<Match> out;
-  for (const auto& tier : tiers_) {
+  for (const auto& tier : s.tiers) {
     for (std::size_t r : tier) {
       const Rule& rule = rules_[r];
-      if (strategy_.kind == Strategy::Kind::random) {
+      if (s.random) {
         // The pool in a seeded shuffled order; invalid anchors leave the pool.
         auto& pool = state_[r].pool;
         std::shuffle(pool.begin(), pool.end(), rng_);
         for (std::size_t i = 0; i < pool.size() && out.size() < limit;) {
           Match m;
-          ++counters_.match_attempts;
-          if (g_.alive(pool[i]) && matcher_.first_at(rule, pool[i], m)) {
+          if (match_at(r, pool[i], m)) {
             out.push_back(std::move(m));
             ++i;
           } else {
@@ -190,7 +239,7 @@ std::vector<Match> Engine::choices(std::size_t limit) {
         if (!seen) out.push_back(m);
       }
       for (const Entry& e : keep) {
-        if (!rule.order) state_[r].pooled[e.anchor] = true;
+        if (!rule.order) state_[r].queued[e.anchor] = true;
         state_[r].queue.push(e);
       }
     }
@@ -199,7 +248,7 @@ std::vector<Match> Engine::choices(std::size_t limit) {
   return out;
 }
 
-bool Engine::apply(Match m, Application* applied) { return apply_rule(rule_index(m.rule), m, applied); }
+void Engine::apply(Match m, Application* applied) { apply_rule(rule_index(m.rule), m, applied); }
 
 void Engine::undo(Graph::Checkpoint c) {
   ++counters_.undos;
@@ -210,7 +259,7 @@ void Engine::undo(Graph::Checkpoint c) {
   process_changes();
 }
 
-bool Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
+void Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
   if (applied) {  // read only when the rewrite acts
     applied->matched = m;
     applied->first_new = g_.id_bound();
@@ -226,10 +275,9 @@ bool Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
     g_.release(before);
     log_.clear();
   };
-  bool acted;
   try {
-    acted = apply_rewrite(g_, m, actions_);
-    if (acted) check_application(rules_[r]);
+    apply_rewrite(g_, m, actions_);
+    check_application(rules_[r]);
   } catch (const std::bad_alloc&) {
     // Out of memory the graph may be half-updated; the run ends without it.
     g_.set_change_log(nullptr);
@@ -237,11 +285,6 @@ bool Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
   } catch (...) {
     roll_back();
     throw;
-  }
-  if (!acted) {
-    roll_back();
-    declined_.emplace_back(r, m.elements[rules_[r].anchor]);
-    return false;
   }
   g_.set_change_log(nullptr);
   g_.release(before);
@@ -254,7 +297,6 @@ bool Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
   }
   if (full_rescan_) rescan();
   else process_changes();
-  return true;
 }
 
 void Engine::check_after(Invariant check, const std::vector<std::string>& rules) {
@@ -320,7 +362,7 @@ void Engine::process_changes() {
              }), log_.end());
   using Kind = Graph::Change::Kind;
   for (std::size_t r = 0; r < rules_.size(); ++r) {
-    if (!state_[r].enabled) continue;
+    if (!state_[r].use_queue && !state_[r].use_pool) continue;
     const Rule& rule = rules_[r];
     if (rule.global) {
       ++counters_.rescans;

@@ -10,7 +10,7 @@ namespace loom::engine {
 
 namespace {
 
-bool apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval);
+void apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval);
 
 void merge_into(Graph& g, Match& m, Id from, Id into) {
   if (from == into || from == no_element || into == no_element) return;
@@ -22,12 +22,12 @@ void merge_into(Graph& g, Match& m, Id from, Id into) {
 
 }  // namespace
 
-bool apply_rewrite(Graph& g, Match& m, const Actions& actions) {
+void apply_rewrite(Graph& g, Match& m, const Actions& actions) {
   const Rule& rule = *m.rule;
   const Matcher eval(g);
   for (const RewriteOp& op : rule.rewrite) {
     try {
-      if (!apply_op(g, m, op, actions, eval)) return false;
+      apply_op(g, m, op, actions, eval);
     } catch (const RuleError&) {
       throw;
     } catch (const std::bad_alloc&) {
@@ -36,12 +36,27 @@ bool apply_rewrite(Graph& g, Match& m, const Actions& actions) {
       throw RuleError(rule.file, op.pos, fmt::format("rule '{}' failed here: {}", rule.name, e.what()));
     }
   }
+}
+
+bool passes_tests(Graph& g, const Match& m, const Actions& actions) {
+  const Rule& rule = *m.rule;
+  std::vector<Id> args;
+  for (const RewriteOp& t : rule.tests) {
+    args.clear();
+    for (int v : t.args) args.push_back(m.elements[v]);
+    try {
+      if (!actions.find_test(t.action)->test(g, args)) return false;
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw RuleError(rule.file, t.pos, fmt::format("rule '{}': test '{}' failed: {}", rule.name, t.action, e.what()));
+    }
+  }
   return true;
 }
 
 namespace {
-/// False when the op is a call whose action declined.
-bool apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval) {
+void apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, const Matcher& eval) {
   const Rule& rule = *m.rule;
   {
     switch (op.kind) {
@@ -76,16 +91,11 @@ bool apply_op(Graph& g, Match& m, const RewriteOp& op, const Actions& actions, c
       case RewriteOp::Kind::call: {
         std::vector<Id> args;
         for (int v : op.args) args.push_back(m.elements[v]);
-        const Actions::Entry& action = *actions.find(op.action);
-        if (action.run(g, args)) return true;
-        if (action.declines == Declines::never)
-          throw RuleError(rule.file, op.pos,
-                          fmt::format("rule '{}': action '{}' declined, but it is declared never to", rule.name, op.action));
-        return false;
+        actions.find(op.action)->run(g, args);
+        break;
       }
     }
   }
-  return true;
 }
 }  // namespace
 
@@ -94,29 +104,29 @@ void check_actions(const Rule& rule, const Actions& actions, const Schema& schem
     const std::string& noun = schema.kind(k).name;
     return (noun.find_first_of("aeiou") == 0 ? "an " : "a ") + noun;
   };
-  for (const RewriteOp& op : rule.rewrite) {
-    if (op.kind != RewriteOp::Kind::call) continue;
-    const Actions::Entry* action = actions.find(op.action);
-    if (!action) throw RuleError(rule.file, op.pos, fmt::format("expected a known action, found '{}'", op.action));
+  auto check = [&](const RewriteOp& op, bool is_test) {
+    const Actions::Entry* action = is_test ? actions.find_test(op.action) : actions.find(op.action);
+    if (!action)
+      throw RuleError(rule.file, op.pos, fmt::format("expected a known {}, found '{}'", is_test ? "test" : "action", op.action));
     const auto& params = action->parameters;
     if (op.args.size() != params.size()) {
       std::string list;
       for (const ActionParameter& p : params)
         list += fmt::format("{}{} {}", list.empty() ? "" : ", ", schema.kind(p.kind).name, p.name);
-      throw RuleError(rule.file, op.pos, fmt::format("action '{}' takes {} argument{} ({}), found {}", op.action,
+      throw RuleError(rule.file, op.pos, fmt::format("{} '{}' takes {} argument{} ({}), found {}", is_test ? "test" : "action", op.action,
                                                      params.size(), params.size() == 1 ? "" : "s", list, op.args.size()));
     }
     for (std::size_t i = 0; i < params.size(); ++i) {
       const Variable& arg = rule.vars[static_cast<std::size_t>(op.args[i])];
       if (arg.kind != params[i].kind)
         throw RuleError(rule.file, op.pos,
-                        fmt::format("argument {} of action '{}' ({}) must be {}, found '{}', {}", i + 1, op.action,
+                        fmt::format("argument {} of {} '{}' ({}) must be {}, found '{}', {}", i + 1, is_test ? "test" : "action", op.action,
                                     params[i].name, kind(params[i].kind), arg.name, kind(arg.kind)));
     }
-    if (action->declines == Declines::sometimes && &op != &rule.rewrite.front())
-      throw RuleError(rule.file, op.pos,
-                      fmt::format("action '{}' may decline, so it must be the first statement of the rewrite", op.action));
-  }
+  };
+  for (const RewriteOp& op : rule.rewrite)
+    if (op.kind == RewriteOp::Kind::call) check(op, false);
+  for (const RewriteOp& t : rule.tests) check(t, true);
 }
 
 }  // namespace loom::engine

@@ -14,43 +14,48 @@
 namespace loom::engine {
 
 /// A named action: domain code a rule may call for what is not local. It
-/// returns true when it acted; false when the state it was given does not call
-/// for it (it has then changed nothing, and the match does not count as an
-/// application).
-using Action = std::function<bool(Graph& graph, std::span<const Id> args)>;
+/// always acts; whether it should is the business of the rule's pattern and
+/// of its tests.
+using Action = std::function<void(Graph& graph, std::span<const Id> args)>;
 
-/// One argument of an action: its name in messages, and the kind of element
-/// it must be.
+/// A named test: a predicate a rule's pattern may require of its match
+/// (`test NAME(args)`), for what a pattern cannot say (CGAL's is_sewable
+/// before sew). It may change the graph to find out, but must leave it as it
+/// found it (a checkpoint and a rollback).
+using Test = std::function<bool(Graph& graph, std::span<const Id> args)>;
+
+/// One argument of an action or test: its name in messages, and the kind of
+/// element it must be.
 struct ActionParameter {
   std::string name;
   KindId kind = 0;
 };
 
-/// Whether an action may return false. One that may is allowed only as the
-/// first statement of a rewrite, so that declining leaves the graph as it was.
-enum class Declines : bool { never, sometimes };
-
-/// The actions a domain offers rules, each with its signature, which
-/// check_actions() holds every call to when rules load.
+/// The actions and tests a domain offers rules, each with its signature,
+/// which check_actions() holds every call to when rules load.
 class Actions {
 public:
   struct Entry {
     std::vector<ActionParameter> parameters;
-    Declines declines = Declines::never;
-    Action run;
+    Action run;   ///< an action's
+    Test test;    ///< a test's
   };
 
-  void add(const std::string& name, std::vector<ActionParameter> parameters, Action action,
-           Declines declines = Declines::never) {
-    actions_[name] = Entry{std::move(parameters), declines, std::move(action)};
+  void add(const std::string& name, std::vector<ActionParameter> parameters, Action action) {
+    actions_[name] = Entry{std::move(parameters), std::move(action), {}};
   }
-  const Entry* find(const std::string& name) const {
-    auto it = actions_.find(name);
-    return it == actions_.end() ? nullptr : &it->second;
+  void add_test(const std::string& name, std::vector<ActionParameter> parameters, Test test) {
+    tests_[name] = Entry{std::move(parameters), {}, std::move(test)};
   }
+  const Entry* find(const std::string& name) const { return find_in(actions_, name); }
+  const Entry* find_test(const std::string& name) const { return find_in(tests_, name); }
 
 private:
-  std::map<std::string, Entry> actions_;
+  static const Entry* find_in(const std::map<std::string, Entry>& m, const std::string& name) {
+    auto it = m.find(name);
+    return it == m.end() ? nullptr : &it->second;
+  }
+  std::map<std::string, Entry> actions_, tests_;
 };
 
 /// Runs the rewrite of `m.rule` on `graph`. Afterwards `m.elements` holds the
@@ -58,13 +63,15 @@ private:
 /// element kept. `merge a into b` redirects every incidence to a onto b and
 /// removes a; `identify a, b` does the same keeping the element with the
 /// larger preferred attribute, else the one with more incoming incidences
-/// (so repeated identifications cost O(n log n) in all). Returns false when
-/// the rewrite's first statement is a call whose action declined.
-bool apply_rewrite(Graph& graph, Match& m, const Actions& actions);
+/// (so repeated identifications cost O(n log n) in all).
+void apply_rewrite(Graph& graph, Match& m, const Actions& actions);
+
+/// Whether the match passes every `test` of its rule's pattern.
+bool passes_tests(Graph& graph, const Match& m, const Actions& actions);
 
 /// Throws RuleError (at the call's file:line:column) if a rule calls an
-/// action that `actions` does not have, with the wrong number or kinds of
-/// arguments, or one that may decline anywhere but first.
+/// action or a test that `actions` does not have, or with the wrong number
+/// or kinds of arguments.
 void check_actions(const Rule& rule, const Actions& actions, const Schema& schema);
 
 }  // namespace loom::engine

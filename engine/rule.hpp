@@ -125,6 +125,9 @@ struct Rule {
   std::vector<NegativePlan> negatives;
   std::vector<CountWatch> count_watches;
   std::vector<RewriteOp> rewrite;
+  /// `test NAME(args)` of the main pattern: predicates the domain evaluates
+  /// on a match the plan found (calls, in the order written).
+  std::vector<RewriteOp> tests;
   bool global = false;                   ///< uses a scan: any change may matter
 };
 

@@ -65,16 +65,6 @@ struct Count {
   Pos pos;
 };
 
-struct Pattern {
-  std::vector<Declaration> declarations;
-  std::vector<Incidence> incidences;
-  std::vector<Expr> conditions;          ///< `if EXPR`
-  std::vector<Count> counts;
-  std::vector<std::vector<std::string>> may_be_equal;  ///< `hom(a, b, ...)`
-  std::vector<Pattern> negatives;        ///< `not { ... }`
-  Pos pos;
-};
-
 struct Statement {
   enum class Op { create, set_port, set_port_list, set_attribute, remove, merge, identify, call };
   Op op = Op::create;
@@ -84,6 +74,17 @@ struct Statement {
   Index index;
   std::vector<Expr> values;        ///< set_port: 1; set_port_list: arity; set_attribute: 1;
                                    ///< merge: {from, into}; identify: {a, b}
+  Pos pos;
+};
+
+struct Pattern {
+  std::vector<Declaration> declarations;
+  std::vector<Incidence> incidences;
+  std::vector<Expr> conditions;          ///< `if EXPR`
+  std::vector<Count> counts;
+  std::vector<std::vector<std::string>> may_be_equal;  ///< `hom(a, b, ...)`
+  std::vector<Statement> tests;          ///< `test NAME(a, b)`: calls (kind: name, names: args)
+  std::vector<Pattern> negatives;        ///< `not { ... }`
   Pos pos;
 };
 

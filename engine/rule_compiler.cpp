@@ -42,6 +42,7 @@ public:
       const ast::Pattern& nac = ast_.pattern.negatives[k];
       if (!nac.negatives.empty()) fail(nac.negatives.front().pos, "negative patterns cannot be nested");
       if (!nac.counts.empty()) fail(nac.counts.front().pos, "count(...) is only allowed in the main pattern");
+      if (!nac.tests.empty()) fail(nac.tests.front().pos, "test ...(...) is only allowed in the main pattern");
       for (const auto& d : nac.declarations) declare(d, static_cast<int>(k));
     }
     for (const auto& s : ast_.rewrite)
@@ -63,6 +64,14 @@ public:
     build_main_plan();
     for (std::size_t k = 0; k < ast_.pattern.negatives.size(); ++k) build_negative(static_cast<int>(k));
     if (ast_.order) r_.order = expr(*ast_.order, -1, -1, false);
+    for (const auto& t : ast_.pattern.tests) {
+      RewriteOp test;
+      test.kind = RewriteOp::Kind::call;
+      test.pos = t.pos;
+      test.action = t.kind;
+      for (const auto& n : t.names) test.args.push_back(var(n, t.pos, -1));
+      r_.tests.push_back(std::move(test));
+    }
     for (const auto& s : ast_.rewrite) statement(s);
     record_sensitivity(r_);
     record_distinctness(r_);

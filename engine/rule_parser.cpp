@@ -218,6 +218,9 @@ private:
         p.conditions.push_back(expr());
       } else if (accept("count")) {
         p.counts.push_back(count(t.pos));
+      } else if (t.text == "test" && t.kind == Token::Kind::identifier && is("(", 2)) {
+        next();
+        p.tests.push_back(call(t.pos, "a test name"));
       } else if (accept("hom")) {
         expect("(");
         std::vector<std::string> names{name()};
@@ -248,10 +251,25 @@ private:
         if (!accept("none")) inc.target = name("a variable or 'none'");
         p.incidences.push_back(std::move(inc));
       } else {
-        fail(t, "expected a declaration 'x: kind', an incidence 'x.port[i] == y', 'if', 'count', 'hom', 'not' or '}'");
+        fail(t, "expected a declaration 'x: kind', an incidence 'x.port[i] == y', 'if', 'count', 'test', 'hom', 'not' or '}'");
       }
     }
     return p;
+  }
+
+  /// `NAME(a, b, ...)` after `call` or `test`.
+  ast::Statement call(Pos pos, const char* what) {
+    ast::Statement s;
+    s.op = ast::Statement::Op::call;
+    s.pos = pos;
+    s.kind = name(what);
+    expect("(");
+    if (!accept(")")) {
+      s.names.push_back(name());
+      while (accept(",")) s.names.push_back(name());
+      expect(")");
+    }
+    return s;
   }
 
   ast::Count count(Pos pos) {
@@ -320,14 +338,7 @@ private:
       s.values.push_back(primary());
       if (accept("prefer")) s.kind = name("an attribute");
     } else if (accept("call")) {
-      s.op = ast::Statement::Op::call;
-      s.kind = name("an action name");
-      expect("(");
-      if (!accept(")")) {
-        s.names.push_back(name());
-        while (accept(",")) s.names.push_back(name());
-        expect(")");
-      }
+      s = call(t.pos, "an action name");
     } else if (t.kind == Token::Kind::identifier && is(".", 1)) {
       s.target = name();
       expect(".");

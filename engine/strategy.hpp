@@ -1,31 +1,86 @@
 #pragma once
-// Strategies: which applicable match a weave applies next.
-//   priority  rules by descending priority (ties: load order); within a rule,
-//             the match with the smallest `order` key, then the smallest anchor id
-//   sequence  the rules named in `order` only, first named first; within a rule
-//             as for priority
-//   random    rules by descending priority; within the highest priority that
-//             has a match, a match drawn uniformly with a seeded generator
+// Strategies: the program that says which rules an engine applies, in what
+// order and until when. A strategy is data, like a rule file
+// (docs/strategies.md has the grammar):
+//
+//   seed 7                                   # of the random picks
+//   phase weave {                            # phases run in order
+//     backtrack {                            # repeat `apply`; on a dead end short of
+//       goal front  window 64  branching 3  max 200   # the goal, undo a recent choice
+//       apply priority all except pillow_improper     # and take its next alternative
+//     }
+//   }
+//   phase repair { when front  repeat { apply pillow_improper } }
+//
+// Nodes, and when they succeed:
+//   apply PICK RULES   one application of a match of RULES; fails when none applies.
+//                      PICK: priority (the default: rules by descending priority,
+//                      ties in load order; within a rule the smallest `order` key,
+//                      then the smallest anchor id), sequence (the rules in the
+//                      order named), random (within the highest priority that has
+//                      a match, a match drawn uniformly with the seeded generator).
+//                      RULES: names, `all`, or `all except NAMES`.
+//   repeat { ... }     the block until it fails (normal form); always succeeds
+//   try { ... } else { ... }
+//                      the first block, undone if it fails, then the second
+//                      (`else` optional); succeeds when the block that ran did
+//   backtrack { ... }  see above; succeeds when the goal (a measure the domain
+//                      names, at zero) is met. It also stops, failing, once the
+//                      measure has not reached a new minimum for 4 x minimum + 256
+//                      applications (a front rolling round without shrinking).
+//   when MEASURE       succeeds when the measure is 0, else fails (and so
+//                      ends its block)
+// A block runs its nodes in turn and fails at the first that fails; what the
+// nodes before it did stays (wrap it in `try` to undo it).
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "engine/rule_ast.hpp"
+
 namespace loom::engine {
 
-struct Strategy {
-  enum class Kind { priority, sequence, random };
-  Kind kind = Kind::priority;
-  std::vector<std::string> order;  ///< sequence: rule names, first applied first
-  std::uint64_t seed = 0;
+struct StrategyNode {
+  enum class Op { apply, repeat, try_else, backtrack, when };
+  enum class Pick { priority, sequence, random };
+  Op op = Op::apply;
+  ast::Pos pos;
+  // apply
+  Pick pick = Pick::priority;
+  bool all = false;                 ///< every loaded rule but `rules`
+  std::vector<std::string> rules;   ///< named (or excepted, with `all`)
+  // repeat: body; try_else: body, otherwise; backtrack: body (one apply)
+  std::vector<StrategyNode> body, otherwise;
+  // backtrack, when
+  std::string goal;
+  std::size_t window = 64, branching = 3, max_backtracks = 200;
+};
 
-  /// "priority", "random", "sequence:a,b,c", or the path of a strategy file:
-  ///   # comment
-  ///   strategy sequence        (priority | sequence | random)
-  ///   order seam cross         (rule names; for sequence)
-  ///   seed 7                   (for random; --seed overrides it)
-  /// Throws std::invalid_argument with a message naming what is wrong.
+struct StrategyPhase {
+  std::string name;
+  std::vector<StrategyNode> body;
+};
+
+struct Strategy {
+  std::vector<StrategyPhase> phases;
+  std::uint64_t seed = 0;
+  std::string source = "priority";  ///< the name given, or the file read
+
+  /// "priority", "random", "sequence:a,b,c" (a single phase repeating one
+  /// apply of every rule, or of those named), or the path of a strategy file.
+  /// Throws RuleError (file:line:column) for a broken file, and
+  /// std::invalid_argument for a spec that is neither.
   static Strategy parse(const std::string& spec);
-  std::string name() const;
+  /// The text of a strategy file; `file` names it in errors.
+  static Strategy parse_text(const std::string& text, const std::string& file);
+
+  std::string name() const { return source; }
+  /// Whether some apply picks at random (the seed then matters).
+  bool random() const;
+  /// The same program with every pick random (a pipeline's further attempts).
+  Strategy with_random_picks() const;
+  /// Every rule name the program mentions, with where.
+  std::vector<std::pair<std::string, ast::Pos>> rule_names() const;
 };
 
 }  // namespace loom::engine

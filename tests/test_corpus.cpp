@@ -49,11 +49,11 @@ std::vector<Case> small_corpus() {
 }
 
 std::vector<std::pair<std::string, engine::Strategy>> strategies() {
-  engine::Strategy random1 = engine::Strategy::parse("random");
+  engine::Strategy random1 = weave::default_strategy().with_random_picks();
   random1.seed = 1;
-  engine::Strategy random2 = engine::Strategy::parse("random");
+  engine::Strategy random2 = random1;
   random2.seed = 2;
-  return {{"priority", engine::Strategy::parse("priority")}, {"random-1", random1}, {"random-2", random2}};
+  return {{"priority", weave::default_strategy()}, {"random-1", random1}, {"random-2", random2}};
 }
 
 }  // namespace

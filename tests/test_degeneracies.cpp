@@ -49,7 +49,7 @@ std::vector<engine::Rule> insertion(const std::string& name) {
 
 /// Runs `rules` until none applies; returns the applications by rule name.
 std::map<std::string, std::size_t> run(stc::Stc& s, std::vector<engine::Rule> rules, std::size_t max_steps = 1000) {
-  engine::Engine eng(s.graph(), std::move(rules), weave::weave_actions(s), engine::Strategy::parse("priority"));
+  engine::Engine eng(s.graph(), std::move(rules), weave::weave_actions(s));
   for (std::size_t i = 0; i < max_steps && eng.step(); ++i) REQUIRE(s.check_invariants() == "");
   return eng.applications();
 }
@@ -184,8 +184,7 @@ TEST_CASE("seam_through leaves a through-3-cell; pillow_through_cell pillows it 
 TEST_CASE("seam_through identifies two boundary nodes and counts them; the seams refuse a fold") {
   // randquad 14 s4 under cross, seam and seam_through meets seam_through.
   stc::Stc s = stc::build_from_surface(gen::randquad(14, 4));
-  engine::Engine eng(s.graph(), shipped({"cross", "seam", "seam_through"}), weave::weave_actions(s),
-                     engine::Strategy::parse("priority"));
+  engine::Engine eng(s.graph(), shipped({"cross", "seam", "seam_through"}), weave::weave_actions(s));
   std::size_t through = 0;
   engine::Application app;
   for (int i = 0; i < 2000 && eng.step(&app); ++i) {
@@ -227,7 +226,7 @@ TEST_CASE("pillow_face and wedge change a front that cross and seam leave alone,
     stc::Stc s = stc::build_from_surface(f4());
     picture(s, name + "-before");
     engine::Id first_new = s.graph().id_bound();
-    engine::Engine eng(s.graph(), shipped({opener}), weave::weave_actions(s), engine::Strategy::parse("priority"));
+    engine::Engine eng(s.graph(), shipped({opener}), weave::weave_actions(s));
     REQUIRE(eng.step());
     CHECK(s.check_invariants() == "");
     picture(s, name + "-after", first_new);
@@ -268,7 +267,7 @@ TEST_CASE("pillow_improper: a closed weave of Schneiders' pyramid with hexes mee
   for (auto& r : engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema))
     if (r.name != "pillow_improper") without.push_back(r);
   weave::WeaveOptions options;
-  options.strategy = engine::Strategy::parse("random");
+  options.strategy = weave::strategy_named("random");
   options.strategy.seed = 176;
   const QuadSurface surface = gen::schneiders();
   stc::Stc s = stc::build_from_surface(surface);
@@ -284,7 +283,7 @@ TEST_CASE("pillow_improper: a closed weave of Schneiders' pyramid with hexes mee
   const engine::Id first_new = s.graph().id_bound();
   engine::Id at = engine::no_element;
   {
-    engine::Engine eng(s.graph(), shipped({"pillow_improper"}), weave::weave_actions(s), engine::Strategy::parse("priority"));
+    engine::Engine eng(s.graph(), shipped({"pillow_improper"}), weave::weave_actions(s));
     engine::Application step;
     std::vector<engine::Id> region;
     std::pair<engine::Id, engine::Id> pair;
@@ -316,7 +315,7 @@ TEST_CASE("pillow_improper: a closed weave of Schneiders' pyramid with hexes mee
   CHECK(s.hexes() > 52);
 }
 
-TEST_CASE("pillow_improper declines on a valid weave and while whiskers are left") {
+TEST_CASE("pillow_improper applies nowhere on a valid weave, and the default strategy runs it once the weave has closed") {
   auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
   auto r = pipeline::mesh_surface(gen::box(2, 2, 1), rules, {});
   REQUIRE(r.combinatorially_valid());
@@ -339,7 +338,7 @@ TEST_CASE("hex insertions k = 3 along a strip, 4 (trough) and 5 (cup): one hex g
     const std::size_t nodes = s.graph().size(s.ids().node);
     picture(s, std::string(c.rule) + "-before");
     const engine::Id first_new = s.graph().id_bound();
-    engine::Engine eng(s.graph(), insertion(c.rule), weave::weave_actions(s), engine::Strategy::parse("priority"));
+    engine::Engine eng(s.graph(), insertion(c.rule), weave::weave_actions(s));
     REQUIRE(eng.step());
     CHECK(s.check_invariants() == "");
     picture(s, std::string(c.rule) + "-after", first_new);

@@ -145,51 +145,54 @@ TEST_CASE("incremental matching agrees with a full rescan on weaves where every 
   for (const auto& r : rules) CHECK_MESSAGE(applied[r.name] > 0, r.name << " never applied: the case does not cover it");
 }
 
-TEST_CASE("a match whose action declines is passed over and not counted; an action declines only where declared") {
+TEST_CASE("a rule's test is asked of each match before its rewrite: a match that fails it is passed over, not counted") {
   stc::Stc stc = stc::build_from_surface(gen::box(1, 1, 1));
   std::set<engine::Id> asked;
   engine::Actions actions;
-  // Acts on the second node it is asked about only.
-  actions.add(
-      "second", {{"v", stc.ids().node}},
-      [&](engine::Graph& g, std::span<const engine::Id> args) {
-        asked.insert(args[0]);
-        if (asked.size() != 2) return false;
-        g.set(args[0], stc.ids().node_boundary, 7);
-        return true;
-      },
-      engine::Declines::sometimes);
-  auto rules = engine::compile_rules("rule r { match { v: node where boundary == 1 } rewrite { call second(v) } }",
-                                     "r.rule", schema());
-  engine::Engine eng(stc.graph(), rules, actions, {});
+  // Holds for the second node it is asked about only.
+  actions.add_test("second", {{"v", stc.ids().node}}, [&](engine::Graph&, std::span<const engine::Id> args) {
+    asked.insert(args[0]);
+    return asked.size() == 2;
+  });
+  actions.add("mark", {{"v", stc.ids().node}},
+              [&](engine::Graph& g, std::span<const engine::Id> args) { g.set(args[0], stc.ids().node_boundary, 7); });
+  auto rules = engine::compile_rules(
+      "rule r { match { v: node where boundary == 1\n test second(v) } rewrite { call mark(v) } }", "r.rule", schema());
+  engine::Engine eng(stc.graph(), rules, actions);
   REQUIRE(eng.step());
   CHECK(asked.size() == 2);
   CHECK(eng.applications().at("r") == 1);
-  CHECK(eng.counters().steps == 1);
-  // Every other node declines; each is asked once and nothing more is counted.
   while (eng.step()) {
   }
-  CHECK(asked.size() == stc.graph().size(stc.ids().node));
-  CHECK(eng.applications().at("r") == 1);
+  CHECK(asked.size() == stc.graph().size(stc.ids().node));  // each asked once
   CHECK(eng.counters().steps == 1);
+  std::size_t marked = 0;
+  for (engine::Id n : stc.graph().members(stc.ids().node)) marked += stc.graph().get(n, stc.ids().node_boundary) == 7;
+  CHECK(marked == 1);
+}
 
-  // An action that may decline is refused anywhere but first; one declared
-  // never to decline and declining is an error naming the call.
-  stc::Stc again = stc::build_from_surface(gen::box(1, 1, 1));
-  engine::Actions no;
-  no.add("maybe", {{"v", again.ids().node}}, [](engine::Graph&, std::span<const engine::Id>) { return false; },
-         engine::Declines::sometimes);
-  no.add("never", {{"v", again.ids().node}}, [](engine::Graph&, std::span<const engine::Id>) { return false; });
-  auto late = engine::compile_rules("rule late { match { v: node where boundary == 1 } rewrite { v.boundary = 3\n call maybe(v) } }",
-                                    "late.rule", schema());
-  CHECK_THROWS_WITH_AS(engine::Engine(again.graph(), late, no, {}),
-                       "late.rule:2:2: action 'maybe' may decline, so it must be the first statement of the rewrite",
-                       engine::RuleError);
-  auto liar = engine::compile_rules("rule liar { match { v: node where boundary == 1 } rewrite { call never(v) } }",
-                                    "liar.rule", schema());
-  engine::Engine eng2(again.graph(), liar, no, {});
-  CHECK_THROWS_WITH_AS(eng2.step(), "liar.rule:1:61: rule 'liar': action 'never' declined, but it is declared never to",
-                       engine::RuleError);
+TEST_CASE("tests are held to their signatures when rules load, and only the main pattern may ask one") {
+  stc::Stc stc = stc::build_from_surface(gen::box(1, 1, 1));
+  auto message = [&](const std::string& text) -> std::string {
+    try {
+      engine::Engine(stc.graph(), engine::compile_rules(text, "t.rule", schema()), weave::weave_actions(stc));
+    } catch (const engine::RuleError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK(message("rule t { match { n: node\n test nosuch(n) } }") == "t.rule:2:2: expected a known test, found 'nosuch'");
+  CHECK(message("rule t { match { n: node\n test pillow_improper(n) } }") ==
+        "t.rule:2:2: expected a known test, found 'pillow_improper'");  // an action, not a test
+  CHECK(message("rule t { match { n: node\n } rewrite { call pillow_improper_helps(n) } }") ==
+        "t.rule:2:14: expected a known action, found 'pillow_improper_helps'");
+  CHECK(message("rule t { match { n, m: node\n test pillow_improper_helps(n, m) } }") ==
+        "t.rule:2:2: test 'pillow_improper_helps' takes 1 argument (node n), found 2");
+  CHECK(message("rule t { match { h: hex\n test pillow_improper_helps(h) } }") ==
+        "t.rule:2:2: argument 1 of test 'pillow_improper_helps' (n) must be a node, found 'h', a hex");
+  CHECK_THROWS_WITH_AS(engine::compile_rules("rule t { match { n: node not { m: node\n test pillow_improper_helps(m) } } }",
+                                             "t.rule", schema()),
+                       "t.rule:2:2: test ...(...) is only allowed in the main pattern", engine::RuleError);
 }
 
 TEST_CASE("a call with the wrong number or kinds of arguments is refused when rules load") {

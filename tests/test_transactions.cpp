@@ -44,7 +44,6 @@ TEST_CASE("an action that throws halfway leaves the graph as it was, and the err
     g.set(args[0], stc.ids().node_boundary, 5);
     g.add(stc.ids().node);
     throw std::runtime_error("out of ideas");
-    return true;
   });
   auto rules = engine::compile_rules("rule r { match { v: node where boundary == 1 }\nrewrite { v.boundary = 2\n call half(v) } }",
                                      "r.rule", schema());

@@ -32,7 +32,7 @@
 namespace {
 
 struct Options {
-  std::string surface, output, rules, strategy = "priority", dot_dir, trace, report;
+  std::string surface, output, rules, strategy, dot_dir, trace, report;
   std::vector<std::string> check_rules;
   std::uint64_t seed = 0;
   std::size_t attempts = 16;
@@ -64,14 +64,16 @@ std::vector<loom::engine::Rule> load_rules(const std::string& dir) {
 loom::engine::Strategy parse_strategy(const Options& o, const std::vector<loom::engine::Rule>& rules) {
   loom::engine::Strategy s;
   try {
-    s = loom::engine::Strategy::parse(o.strategy);
+    if (!o.strategy.empty()) s = loom::weave::strategy_named(o.strategy);
+    else s = o.rules.empty() ? loom::weave::default_strategy() : loom::weave::strategy_of(o.rules);
+    loom::engine::check_strategy(s, rules, {"front"});
   } catch (const std::invalid_argument& e) {
     throw loom::InputError(e.what());
+  } catch (const loom::engine::RuleError& e) {
+    throw loom::InputError(e.pos.line > 0 ? std::string(e.what()) + "; fix the strategy file (grammar: docs/strategies.md)"
+                                          : std::string(e.what()));
   }
   if (o.seed_given) s.seed = o.seed;
-  for (const auto& name : s.order)
-    if (std::none_of(rules.begin(), rules.end(), [&](const auto& r) { return r.name == name; }))
-      throw loom::InputError(fmt::format("--strategy {}: no rule '{}' is loaded; see 'loom rules list'", o.strategy, name));
   return s;
 }
 
@@ -90,6 +92,9 @@ nlohmann::json report_json(const Options& o, const loom::pipeline::MeshingResult
   j["seed"] = strategy.seed;
   j["attempts"] = r.attempts;
   j["backtracks"] = r.weave.backtracks;
+  j["phases"] = nlohmann::json::array();
+  for (const auto& p : r.weave.phases)
+    j["phases"].push_back({{"name", p.name}, {"steps", p.steps}, {"backtracks", p.backtracks}});
   j["closed"] = r.weave.closed;
   j["steps"] = r.weave.steps;
   j["rule_applications"] = r.weave.applications;
@@ -300,7 +305,7 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
   app.add_option("SURFACE", o->surface, "closed all-quad surface (.obj .off .vtk .vtu .msh)")->required()->check(CLI::ExistingFile);
   app.add_option("-o,--output", o->output, "hex mesh to write (.vtk .vtu .msh)")->required();
   app.add_option("--rules", o->rules, "directory of *.rule files (default: the shipped rules/)");
-  app.add_option("--strategy", o->strategy, "priority (default), random, sequence:RULE,RULE..., or a strategy file");
+  app.add_option("--strategy", o->strategy, "a strategy file (default: the rules' strategies/default.strategy, else priority), priority, random or sequence:RULE,RULE...");
   app.add_option("--check-rules", o->check_rules,
                  "check the STC invariants after every application of these rules (names, or 'all'); a violation "
                  "rolls the application back and stops with exit 2 naming the rule")

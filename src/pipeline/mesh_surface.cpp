@@ -216,8 +216,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
   const auto start = std::chrono::steady_clock::now();
   MeshingResult r;
   weave::WeaveOptions attempt = options.weave;
-  const std::uint64_t first_seed =
-      options.weave.strategy.kind == engine::Strategy::Kind::random ? options.weave.strategy.seed : 0;
+  const std::uint64_t first_seed = options.weave.strategy.random() ? options.weave.strategy.seed : 0;
   std::optional<HexMesh> best_woven;  // of the attempt that left the fewest whiskers
   std::size_t best_left = SIZE_MAX;
   for (r.attempts = 1;; ++r.attempts) {
@@ -229,7 +228,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
       best_woven = stc::woven_over_surface(r.stc, surface.points.size());
     }
     if (r.attempts >= options.attempts) break;
-    attempt.strategy = engine::Strategy::parse("random");
+    attempt.strategy = options.weave.strategy.with_random_picks();
     attempt.strategy.seed = first_seed + r.attempts;
     if (options.before_attempt) options.before_attempt(r.attempts + 1, attempt.strategy, r.weave);
   }

@@ -132,7 +132,7 @@ std::optional<std::size_t> try_pillow(stc::Stc& stc, std::span<const stc::Id> se
 
 }  // namespace
 
-std::size_t pillow_improper_pair(stc::Stc& stc, stc::Id h1, stc::Id h2) {
+std::optional<std::vector<stc::Id>> best_improper_pillow(stc::Stc& stc, stc::Id h1, stc::Id h2) {
   std::vector<stc::Id> best;
   std::ptrdiff_t best_change = std::numeric_limits<std::ptrdiff_t>::max();
   for (const auto& set : candidate_sets(stc, h1, h2)) {
@@ -142,8 +142,13 @@ std::size_t pillow_improper_pair(stc::Stc& stc, stc::Id h1, stc::Id h2) {
     const auto change = static_cast<std::ptrdiff_t>(*after) - before;
     if (change < best_change) best_change = change, best = set;
   }
-  if (best.empty() || best_change >= 0) return 0;
-  return insert_pillow(stc, best).hexes;
+  if (best.empty() || best_change >= 0) return std::nullopt;
+  return best;
+}
+
+std::size_t pillow_improper_pair(stc::Stc& stc, stc::Id h1, stc::Id h2) {
+  const auto best = best_improper_pillow(stc, h1, h2);
+  return best ? insert_pillow(stc, *best).hexes : 0;
 }
 
 }  // namespace loom::weave

@@ -46,6 +46,12 @@ std::optional<std::pair<stc::Id, stc::Id>> improper_pair_at(const stc::Stc& stc,
 /// Improper meetings (pairs of hexes) that involve at least one of `hexes`.
 std::size_t improper_meetings_around(const stc::Stc& stc, std::span<const stc::Id> hexes);
 
+/// The set to pillow, among {h}, {h, n} and {h, n, m} for h = h1, h2 and
+/// neighbours n, m of h, after which h1 and h2 meet properly and the fewest
+/// improper meetings are left (the first such set on a tie), provided that
+/// is fewer than before; nullopt when none is. Tries each and undoes it.
+std::optional<std::vector<stc::Id>> best_improper_pillow(stc::Stc& stc, stc::Id h1, stc::Id h2);
+
 /// Pillows the set, among {h}, {h, n} and {h, n, m} for h = h1, h2 and
 /// neighbours n, m of h, after which h1 and h2 meet properly and the fewest
 /// improper meetings are left (the first such set on a tie), provided that

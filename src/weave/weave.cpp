@@ -1,13 +1,13 @@
 #include "src/weave/weave.hpp"
 
 #include <cstdlib>
-#include <deque>
 #include <stdexcept>
 #include <map>
 #include <memory>
 
 #include <fmt/format.h>
 
+#include "engine/strategy_run.hpp"
 #include "src/weave/improper.hpp"
 #include "src/weave/pillow.hpp"
 
@@ -16,6 +16,30 @@ namespace loom::weave {
 std::filesystem::path default_rules_dir() {
   if (const char* env = std::getenv("LOOM_RULES"); env && *env) return env;
   return LOOM_RULES_DIR;
+}
+
+engine::Strategy strategy_named(const std::string& spec) {
+  const bool builtin = spec == "priority" || spec == "random" || spec.rfind("sequence:", 0) == 0;
+  engine::Strategy s = engine::Strategy::parse(spec);
+  if (!builtin) return s;
+  // The engine's builtin repeats one apply; the weave backtracks over it.
+  engine::StrategyNode backtrack;
+  backtrack.op = engine::StrategyNode::Op::backtrack;
+  backtrack.goal = "front";
+  backtrack.body.push_back(std::move(s.phases.front().body.front().body.front()));
+  s.phases.front() = {"weave", {std::move(backtrack)}};
+  return s;
+}
+
+engine::Strategy strategy_of(const std::filesystem::path& rules_dir) {
+  const auto file = rules_dir / "strategies" / "default.strategy";
+  if (std::filesystem::exists(file)) return engine::Strategy::parse(file.string());
+  return strategy_named("priority");
+}
+
+engine::Strategy default_strategy() {
+  static const engine::Strategy shipped = strategy_of(default_rules_dir());
+  return shipped;
 }
 
 namespace {
@@ -58,7 +82,6 @@ engine::Actions weave_actions(stc::Stc& stc) {
   actions.add("place_hex_corner", {{"n", node}, {"v", node}, {"a", node}, {"b", node}, {"c", node}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     auto at = [&](engine::Id node) { return placed(stc, node, "place_hex_corner"); };
     stc.place(args[0], at(args[2]) + at(args[3]) + at(args[4]) - 2.0 * at(args[1]));
-    return true;
   });
   // place_off_face(n, a, b, d): n is the corner above a of a hex standing on
   // a front face a b . d (which faces away from the hex), at the face's
@@ -69,13 +92,11 @@ engine::Actions weave_actions(stc::Stc& stc) {
     Vec3 away = cross(ab, ad);
     double length = 0.5 * (norm(ab) + norm(ad)), size = norm(away);
     stc.place(args[0], size > 0 ? a - (length / size) * away : a);
-    return true;
   });
   // pillow_star(n): a pillow sheet around every hex at node n.
   actions.add("pillow_star", {{"n", node}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     auto star = hexes_at_node(stc, args[0]);
     insert_pillow(stc, star);
-    return true;
   });
   // pillow_doublet(h1, h2): a pillow sheet around h1 and the hexes across
   // h1's faces at the ends of the edges h1 shares with h2 (their faces
@@ -83,27 +104,27 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // would meet h2 in three nodes).
   actions.add("pillow_doublet", {{"h1", hex}, {"h2", hex}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     insert_pillow(stc, doublet_shrink_set(stc, args[0], args[1]));
-    return true;
   });
   // split_pinched(n): one node per group of n's hexes that meet only at n;
   // each part's boundary flag is 1 exactly when it holds a boundary face.
   actions.add("split_pinched", {{"n", node}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     split_pinched_node(stc, args[0]);
-    return true;
   });
-  // pillow_improper(n): once the weave has closed, a pillow sheet parting
-  // two hexes at n that meet improperly (improper.hpp); declines while
-  // whiskers are left (hexes still change), where n's hexes meet properly,
-  // and where no pillow would leave fewer improper meetings.
-  actions.add(
-      "pillow_improper", {{"n", node}},
-      [&stc, open_sides = OpenSides(stc), corners = std::make_shared<HexCornerCache>(stc)](
-          engine::Graph&, std::span<const engine::Id> args) {
-        if (open_sides() > 0) return false;
-        auto pair = improper_pair_at(stc, args[0], *corners);
-        return pair && pillow_improper_pair(stc, pair->first, pair->second) > 0;
-      },
-      engine::Declines::sometimes);
+  // pillow_improper_helps(n): two hexes at n meet improperly (improper.hpp)
+  // and a pillow would leave fewer improper meetings. It tries the pillows
+  // and undoes them.
+  auto corners = std::make_shared<HexCornerCache>(stc);
+  actions.add_test("pillow_improper_helps", {{"n", node}},
+                   [&stc, corners](engine::Graph&, std::span<const engine::Id> args) {
+                     auto pair = improper_pair_at(stc, args[0], *corners);
+                     return pair && best_improper_pillow(stc, pair->first, pair->second).has_value();
+                   });
+  // pillow_improper(n): the pillow sheet that parts them, where it helps.
+  actions.add("pillow_improper", {{"n", node}}, [&stc, corners](engine::Graph&, std::span<const engine::Id> args) {
+    auto pair = improper_pair_at(stc, args[0], *corners);
+    if (!pair || !pillow_improper_pair(stc, pair->first, pair->second))
+      throw std::runtime_error(fmt::format("no pillow helps at node {} (test it with pillow_improper_helps)", args[0]));
+  });
   return actions;
 }
 
@@ -125,94 +146,24 @@ std::string describe_left(const stc::Stc& stc) {
 
 }  // namespace
 
-namespace {
-
-/// A step the strategy chose, and the graph before it: on a dead end the
-/// step is undone and the next-best match at that point is taken instead.
-struct Choice {
-  engine::Graph::Checkpoint before;
-  std::size_t taken = 0;  ///< rank of the match applied (0: the strategy's first)
-};
-
-}  // namespace
-
 WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOptions& options) {
   WeaveResult result;
-  std::size_t limit = options.max_steps ? options.max_steps : 200 * stc.faces() + 10000;
-  engine::Engine eng(stc.graph(), std::move(rules), weave_actions(stc), options.strategy);
+  engine::Engine eng(stc.graph(), std::move(rules), weave_actions(stc), options.strategy.seed);
   if (stc::invariant_checks_on() || !options.check_rules.empty())
     eng.check_after([&stc](const engine::Graph&) { return stc.check_invariants(); },
                     stc::invariant_checks_on() ? std::vector<std::string>{} : options.check_rules);
-  engine::Application app;
-  std::deque<Choice> choices;
-  const bool backtracking = options.max_backtracks > 0 && options.branching > 1 && options.backtrack_window > 0;
-  // Rules that act only on a closed weave decline while it is open; the
-  // matches they declined are offered again once, when it closes.
   const OpenSides front(stc);
-  bool closed_once = false;
-  auto after = [&] {
-    if (options.after_step) options.after_step(app, stc);
-    if (!closed_once && front() == 0) {
-      closed_once = true;
-      eng.retry_declined();
-    }
-  };
-  // Alternatives are looked for only on a dead end, so a weave that never
-  // gets stuck pays one checkpoint a step and nothing else.
-  auto backtrack = [&] {
-    while (!choices.empty() && result.backtracks < options.max_backtracks) {
-      Choice& c = choices.back();
-      eng.undo(c.before);
-      if (c.taken + 1 < options.branching) {
-        auto alternatives = eng.choices(c.taken + 2);
-        if (alternatives.size() > c.taken + 1) {
-          ++result.backtracks;
-          if (eng.apply(std::move(alternatives[++c.taken]), &app)) after();
-          return true;
-        }
-      }
-      eng.release(c.before);
-      choices.pop_back();
-    }
-    return false;
-  };
-  // A weave whose front stops reaching new minima (crossings rolling round a
-  // front that never shrinks) is at a dead end as surely as one no rule applies to.
-  std::int64_t smallest_front = front();
-  std::size_t since_smallest = 0;
-  auto stalled = [&] {
-    std::int64_t now = front();
-    if (now < smallest_front) smallest_front = now, since_smallest = 0;
-    return ++since_smallest > static_cast<std::size_t>(4 * smallest_front + 256);
-  };
-  while (eng.counters().steps < limit) {
-    if (backtracking) {
-      choices.push_back({eng.mark(), 0});
-      if (choices.size() > options.backtrack_window) {
-        stc.graph().release_oldest();
-        choices.pop_front();
-      }
-    }
-    if (eng.step(&app)) {
-      after();
-      if (front() == 0 || !stalled()) continue;
-      // Backtracking within the window cannot leave a front that has been
-      // rolling for longer than the window: give up.
-      result.stalled = true;
-      break;
-    }
-    if (backtracking) {
-      eng.release(choices.back().before);
-      choices.pop_back();
-    }
-    if (stc.whiskers() == 0 || !backtracking || !backtrack()) break;
-  }
-  while (!choices.empty()) {
-    eng.release(choices.front().before);
-    choices.pop_front();
-  }
+  engine::StrategyDomain domain;
+  domain.measures["front"] = [&front] { return front(); };
+  domain.max_steps = options.max_steps ? options.max_steps : 200 * stc.faces() + 10000;
+  if (options.after_step) domain.after_step = [&](const engine::Application& app) { options.after_step(app, stc); };
+  engine::check_strategy(options.strategy, eng.rules(), {"front"});
+  const engine::StrategyOutcome run = engine::run_strategy(eng, options.strategy, domain);
+  result.backtracks = run.backtracks;
+  result.stalled = run.stalled;
+  result.phases = run.phases;
   result.steps = eng.counters().steps;
-  result.step_limit_hit = result.steps >= limit;
+  result.step_limit_hit = run.step_limit_hit;
   result.applications = eng.applications();
   result.counters = eng.counters();
   result.whiskers_left = stc.whiskers();
@@ -220,7 +171,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   if (!result.closed) {
     result.left = describe_left(stc);
     if (result.backtracks) result.left += fmt::format(" after {} backtracks", result.backtracks);
-    if (result.stalled) result.left += fmt::format("; the front stopped shrinking for {} applications", since_smallest);
+    if (result.stalled) result.left += fmt::format("; the front stopped shrinking for {} applications", run.stalled_for);
     if (result.step_limit_hit) result.left += fmt::format(" (stopped after {} applications)", result.steps);
   }
   return result;

@@ -11,22 +11,30 @@
 #include "engine/engine.hpp"
 #include "engine/rule.hpp"
 #include "engine/strategy.hpp"
+#include "engine/strategy_run.hpp"
 #include "src/stc/stc.hpp"
 
 namespace loom::weave {
 
 struct WeaveResult;
 
+/// The shipped rules' strategy file (rules/strategies/default.strategy).
+engine::Strategy default_strategy();
+/// "priority", "random" or "sequence:a,b": one phase that applies every rule
+/// (or those named) by that pick, backtracking on dead ends as the shipped
+/// default does (window 64, branching 3, at most 200, goal `front`); else the
+/// path of a strategy file. Throws as engine::Strategy::parse.
+engine::Strategy strategy_named(const std::string& spec);
+/// The strategy of a rule directory: its strategies/default.strategy if it
+/// has one, else strategy_named("priority").
+engine::Strategy strategy_of(const std::filesystem::path& rules_dir);
+
 struct WeaveOptions {
-  engine::Strategy strategy;
+  /// Its backtracks may name the goal `front`: the open hex sides left (0
+  /// when the weave has closed).
+  engine::Strategy strategy = default_strategy();
   /// Stop after this many applications (0: 200 per initial face plus 10,000).
   std::size_t max_steps = 0;
-  /// When no rule applies and whiskers are left, go back to the latest of
-  /// the last `backtrack_window` choices that had alternatives and take the
-  /// next one (at most `branching` alternatives a choice, `max_backtracks` in all).
-  std::size_t max_backtracks = 200;
-  std::size_t branching = 3;
-  std::size_t backtrack_window = 64;
   /// The rules after whose every application the STC invariants are checked
   /// (a violation rolls it back and names the rule); all of them when
   /// stc::invariant_checks_on().
@@ -41,6 +49,7 @@ struct WeaveResult {
   std::size_t steps = 0;
   std::size_t whiskers_left = 0;
   std::size_t backtracks = 0;       ///< choices undone to try another
+  std::vector<engine::PhaseFigures> phases;  ///< of the strategy
   bool stalled = false;             ///< the weave stopped because its front stopped shrinking
   std::map<std::string, std::size_t> applications;  ///< by rule name
   engine::EngineCounters counters;

@@ -1,0 +1,201 @@
+#include "engine/strategy_run.hpp"
+
+#include <algorithm>
+#include <deque>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "engine/rule_parser.hpp"
+
+namespace loom::engine {
+
+namespace {
+
+template <class F>
+void each_node(const std::vector<StrategyNode>& nodes, F&& f) {
+  for (const StrategyNode& n : nodes) {
+    f(n);
+    each_node(n.body, f);
+    each_node(n.otherwise, f);
+  }
+}
+
+class Runner {
+public:
+  Runner(Engine& engine, const Strategy& strategy, const StrategyDomain& domain)
+      : eng_(engine), strategy_(strategy), domain_(domain) {
+    for (const StrategyPhase& p : strategy.phases)
+      each_node(p.body, [&](const StrategyNode& n) {
+        if (n.op != StrategyNode::Op::apply) return;
+        try {
+          selection_[&n] = eng_.select(n.pick, n.all, n.rules);
+        } catch (const std::invalid_argument& e) {
+          throw RuleError(strategy.source, n.pos, std::string(e.what()) + "; see 'loom rules list'");
+        }
+      });
+  }
+
+  StrategyOutcome run() {
+    for (const StrategyPhase& p : strategy_.phases) {
+      if (stop_) break;
+      phase_ = &out_.phases.emplace_back(PhaseFigures{p.name});
+      const std::size_t before = eng_.counters().steps;
+      block(p.body);
+      phase_->steps = eng_.counters().steps - before;
+    }
+    return out_;
+  }
+
+private:
+  struct Choice {
+    Graph::Checkpoint before;
+    std::size_t taken = 0;  ///< rank of the match applied (0: the pick's first)
+  };
+
+  bool block(const std::vector<StrategyNode>& nodes) {
+    for (const StrategyNode& n : nodes)
+      if (stop_ || !node(n)) return false;
+    return true;
+  }
+
+  bool node(const StrategyNode& n) {
+    switch (n.op) {
+      case StrategyNode::Op::apply: return apply(selection_.at(&n));
+      case StrategyNode::Op::repeat:
+        // An iteration that applies nothing would repeat for ever.
+        for (std::size_t before = SIZE_MAX; !stop_ && before != eng_.counters().steps;) {
+          before = eng_.counters().steps;
+          if (!block(n.body)) break;
+        }
+        return true;
+      case StrategyNode::Op::try_else: {
+        const Graph::Checkpoint mark = eng_.mark();
+        ++open_marks_;
+        const bool ok = block(n.body);
+        --open_marks_;
+        if (!ok) eng_.undo(mark);
+        eng_.release(mark);
+        if (ok || n.otherwise.empty()) return ok;
+        return block(n.otherwise);
+      }
+      case StrategyNode::Op::backtrack: return backtrack(n);
+      case StrategyNode::Op::when: return domain_.measures.at(n.goal)() == 0;
+    }
+    return false;
+  }
+
+  bool limit_reached() {
+    if (eng_.counters().steps < domain_.max_steps) return false;
+    stop_ = out_.step_limit_hit = true;
+    return true;
+  }
+
+  void after() {
+    if (domain_.after_step) domain_.after_step(app_);
+  }
+
+  bool apply(Engine::Selection s) {
+    if (limit_reached() || !eng_.step(s, &app_)) return false;
+    after();
+    return true;
+  }
+
+  // Alternatives are looked for only on a dead end, so a run that never gets
+  // stuck pays one checkpoint a step and nothing else.
+  bool backtrack(const StrategyNode& n) {
+    const Engine::Selection s = selection_.at(&n.body.front());
+    const auto& goal = domain_.measures.at(n.goal);
+    const bool backtracking = n.max_backtracks > 0 && n.branching > 1 && n.window > 0;
+    std::deque<Choice> choices;
+    std::size_t backtracks = 0;
+    auto go_back = [&] {
+      while (!choices.empty() && backtracks < n.max_backtracks) {
+        Choice& c = choices.back();
+        eng_.undo(c.before);
+        if (c.taken + 1 < n.branching) {
+          auto alternatives = eng_.choices(s, c.taken + 2);
+          if (alternatives.size() > c.taken + 1) {
+            ++backtracks;
+            eng_.apply(std::move(alternatives[++c.taken]), &app_);
+            after();
+            return true;
+          }
+        }
+        eng_.release(c.before);
+        choices.pop_back();
+      }
+      return false;
+    };
+    std::int64_t smallest = goal();
+    std::size_t since_smallest = 0;
+    auto stalled = [&] {
+      const std::int64_t now = goal();
+      if (now < smallest) smallest = now, since_smallest = 0;
+      return ++since_smallest > static_cast<std::size_t>(4 * smallest + 256);
+    };
+    while (!limit_reached()) {
+      if (backtracking) {
+        choices.push_back({eng_.mark(), 0});
+        // Inside a try, the oldest checkpoint is the try's: the window then grows.
+        if (choices.size() > n.window && open_marks_ == 0) {
+          eng_.release_oldest();
+          choices.pop_front();
+        }
+      }
+      if (eng_.step(s, &app_)) {
+        after();
+        if (goal() == 0 || !stalled()) continue;
+        out_.stalled = true;
+        out_.stalled_for = since_smallest;
+        break;
+      }
+      if (backtracking) {
+        eng_.release(choices.back().before);
+        choices.pop_back();
+      }
+      if (goal() == 0 || !backtracking || !go_back()) break;
+    }
+    while (!choices.empty()) {
+      eng_.release(choices.front().before);
+      choices.pop_front();
+    }
+    out_.backtracks += backtracks;
+    phase_->backtracks += backtracks;
+    return goal() == 0;
+  }
+
+  Engine& eng_;
+  const Strategy& strategy_;
+  const StrategyDomain& domain_;
+  std::map<const StrategyNode*, Engine::Selection> selection_;
+  StrategyOutcome out_;
+  PhaseFigures* phase_ = nullptr;
+  Application app_;
+  int open_marks_ = 0;
+  bool stop_ = false;
+};
+
+}  // namespace
+
+void check_strategy(const Strategy& strategy, const std::vector<Rule>& rules, const std::vector<std::string>& measures) {
+  for (const StrategyPhase& p : strategy.phases)
+    each_node(p.body, [&](const StrategyNode& n) {
+      for (const std::string& name : n.rules)
+        if (std::none_of(rules.begin(), rules.end(), [&](const Rule& r) { return r.name == name; }))
+          throw RuleError(strategy.source, n.pos, fmt::format("no rule '{}' is loaded; see 'loom rules list'", name));
+      if ((n.op == StrategyNode::Op::backtrack || n.op == StrategyNode::Op::when) && std::find(measures.begin(), measures.end(), n.goal) == measures.end()) {
+        std::string known;
+        for (const auto& m : measures) known += (known.empty() ? "" : ", ") + m;
+        throw RuleError(strategy.source, n.pos,
+                        fmt::format("no measure '{}' to make a goal of; this domain has: {}", n.goal,
+                                    known.empty() ? "none" : known));
+      }
+    });
+}
+
+StrategyOutcome run_strategy(Engine& engine, const Strategy& strategy, const StrategyDomain& domain) {
+  return Runner(engine, strategy, domain).run();
+}
+
+}  // namespace loom::engine

@@ -1,0 +1,168 @@
+// Strategies as data: the grammar and its errors, what each node does on a
+// real weave, and `loom weave --strategy FILE`.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/engine.hpp"
+#include "engine/rule_compiler.hpp"
+#include "engine/rule_parser.hpp"
+#include "engine/strategy_run.hpp"
+#include "src/gen/generators.hpp"
+#include "src/stc/build.hpp"
+#include "src/weave/weave.hpp"
+#include "tests/support.hpp"
+
+using namespace loom;
+using loom::test::run_cli;
+using loom::test::ScratchDir;
+
+namespace {
+
+std::string parse_error(const std::string& text) {
+  try {
+    engine::Strategy::parse_text(text, "s.strategy");
+  } catch (const engine::RuleError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::vector<engine::Rule> shipped_rules() {
+  return engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+}
+
+/// An engine over a fresh STC of `surface` with the shipped rules, and the
+/// weave's measure `front` (whiskers left).
+struct Bench {
+  explicit Bench(const QuadSurface& surface)
+      : stc(stc::build_from_surface(surface)), eng(stc.graph(), shipped_rules(), weave::weave_actions(stc)) {
+    domain.measures["front"] = [this] { return static_cast<std::int64_t>(stc.whiskers()); };
+  }
+  engine::StrategyOutcome run(const std::string& text) {
+    auto s = engine::Strategy::parse_text(text, "t.strategy");
+    engine::check_strategy(s, eng.rules(), {"front"});
+    return engine::run_strategy(eng, s, domain);
+  }
+  stc::Stc stc;
+  engine::Engine eng;
+  engine::StrategyDomain domain;
+};
+
+}  // namespace
+
+TEST_CASE("the shipped strategies parse into their phases") {
+  const auto s = weave::default_strategy();
+  REQUIRE(s.phases.size() == 2);
+  CHECK(s.phases[0].name == "weave");
+  CHECK(s.phases[1].name == "repair");
+  const auto& bt = s.phases[0].body.at(0);
+  CHECK(bt.op == engine::StrategyNode::Op::backtrack);
+  CHECK((bt.goal == "front" && bt.window == 64 && bt.branching == 3 && bt.max_backtracks == 200));
+  CHECK((bt.body.at(0).all && bt.body.at(0).rules == std::vector<std::string>{"pillow_improper"}));
+  CHECK_FALSE(s.random());
+  CHECK(s.with_random_picks().random());
+  const auto plain =
+      engine::Strategy::parse((weave::default_rules_dir() / "strategies" / "no_backtracking.strategy").string());
+  CHECK(plain.phases.at(0).body.at(0).op == engine::StrategyNode::Op::repeat);
+}
+
+TEST_CASE("a broken strategy is refused with file:line:column and what was expected") {
+  CHECK(parse_error("phase p { apply }") == "s.strategy:1:17: expected a rule name or 'all', found '}'");
+  CHECK(parse_error("phase p {\n  backtrack { apply all }\n}") ==
+        "s.strategy:2:15: backtrack needs 'goal MEASURE' first (the goal is that the measure reaches 0), found 'apply'");
+  CHECK(parse_error("phase p { backtrack { goal front repeat { apply all } } }") ==
+        "s.strategy:1:34: backtrack takes one 'apply' (its alternatives are that apply's matches), found 'repeat'");
+  CHECK(parse_error("phase p { }") == "s.strategy:1:11: an empty block does nothing; write a node in it, found '}'");
+  CHECK(parse_error("seed x") == "s.strategy:1:6: expected a seed (a non-negative integer), found 'x'");
+  CHECK(parse_error("# nothing\n") == "s.strategy: a strategy needs at least one 'phase NAME { ... }', found 'end of file'");
+  CHECK(parse_error("phase p { apply all ! }") ==
+        "s.strategy:1:21: unexpected character '!'; a strategy holds words, numbers and braces");
+  CHECK(parse_error("phase p { frobnicate }") ==
+        "s.strategy:1:11: expected 'apply', 'repeat', 'try', 'backtrack', 'when' or '}', found 'frobnicate'");
+  std::string deep = "phase p ";
+  for (int i = 0; i < 300; ++i) deep += "{ repeat ";
+  CHECK(parse_error(deep).find("blocks nested more than 100 deep") != std::string::npos);
+
+  Bench b(gen::box(1, 1, 1));
+  auto checked = [&](const std::string& text) -> std::string {
+    try {
+      engine::check_strategy(engine::Strategy::parse_text(text, "c.strategy"), b.eng.rules(), {"front"});
+    } catch (const engine::RuleError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK(checked("phase p { apply cross nosuch }") == "c.strategy:1:11: no rule 'nosuch' is loaded; see 'loom rules list'");
+  CHECK(checked("phase p { when depth }") == "c.strategy:1:11: no measure 'depth' to make a goal of; this domain has: front");
+  CHECK(checked("phase p { apply all except cross }").empty());
+}
+
+TEST_CASE("phases run in order; repeat applies to normal form; a rule of a later phase waits for it") {
+  Bench b(gen::box(2, 2, 2));
+  auto out = b.run("phase first { repeat { apply seam } }\nphase second { repeat { apply priority all except pillow_improper } }");
+  REQUIRE(out.phases.size() == 2);
+  CHECK(out.phases[0].name == "first");
+  CHECK(out.phases[0].steps == 0);  // no seam before a cross
+  CHECK(out.phases[1].steps > 0);
+  CHECK(b.stc.whiskers() == 0);
+  CHECK(b.stc.hexes() == 8);
+  CHECK(b.eng.applications().count("pillow_improper") == 0);
+}
+
+TEST_CASE("try undoes a block that fails and runs its else; when gates a block on a measure") {
+  Bench b(gen::box(1, 1, 1));
+  const std::size_t elements = b.stc.graph().size();
+  // One cross, then `when front` fails (whiskers are left): the cross is undone.
+  auto out = b.run("phase p { try { apply cross  when front } }");
+  CHECK(out.phases[0].steps == 1);
+  CHECK(b.stc.hexes() == 0);
+  CHECK(b.stc.graph().size() == elements);
+  CHECK(b.eng.counters().undos >= 1);
+
+  b.run("phase p { try { apply cross  when front } else { apply cross } }");
+  CHECK(b.stc.hexes() == 1);
+
+  out = b.run("phase p { when front  apply cross }");
+  CHECK(out.phases[0].steps == 0);
+  CHECK(b.stc.hexes() == 1);
+}
+
+TEST_CASE("a strategy's step bound stops it, and says so") {
+  Bench b(gen::box(3, 3, 3));
+  b.domain.max_steps = 5;
+  auto out = b.run("phase p { repeat { apply priority all except pillow_improper } }");
+  CHECK(out.step_limit_hit);
+  CHECK(b.eng.counters().steps == 5);
+}
+
+TEST_CASE("loom weave runs a strategy file, reports its phases, and refuses a broken one with exit 2") {
+  ScratchDir dir("strategies");
+  REQUIRE(run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
+  const std::string plain = (weave::default_rules_dir() / "strategies" / "no_backtracking.strategy").string();
+  auto r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "a.vtk").string() + " --strategy " + plain +
+                   " --report " + (dir / "a.json").string());
+  REQUIRE(r.status == 0);
+  std::ifstream in(dir / "a.json");
+  auto j = nlohmann::json::parse(in);
+  CHECK(j["strategy"] == plain);
+  REQUIRE(j["phases"].size() == 2);
+  CHECK(j["phases"][0]["name"] == "weave");
+  CHECK(j["phases"][0]["steps"].get<int>() > 0);
+  CHECK(j["phases"][1]["name"] == "repair");
+  CHECK(j["hexes"] == 8);
+
+  {
+    std::ofstream bad(dir / "bad.strategy");
+    bad << "phase weave {\n  apply priority all except nosuch\n}\n";
+  }
+  r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "b.vtk").string() + " --strategy " +
+              (dir / "bad.strategy").string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("bad.strategy:2:3: no rule 'nosuch' is loaded") != std::string::npos);
+  CHECK(r.err.find("docs/strategies.md") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "b.vtk"));
+}
