@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
-#include <tuple>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -48,7 +47,7 @@ public:
       const Word& name = next("a kind name");
       declare([&] { schema_.add_kind(name.text); }, name);
     } else if (key == "port") {
-      auto [owner, name, at] = member();
+      const Member m = member();
       const Word& arity_word = next("the port's number of slots");
       unsigned arity = number(arity_word);
       PortOrder order = PortOrder::ordered;
@@ -62,9 +61,9 @@ public:
       }
       const Word& target = next("the kind the port points at");
       KindId to = kind(target);
-      declare([&] { schema_.add_port(owner, name, arity, to, order, presence); }, at);
+      declare([&] { schema_.add_port(m.owner, m.name, arity, to, order, presence); }, m.at);
     } else if (key == "attribute") {
-      auto [owner, name, at] = member();
+      const Member m = member();
       std::int32_t value = 0;
       if (pos_ < words_.size()) {
         const Word& w = words_[pos_++];
@@ -77,7 +76,7 @@ public:
           fail(w, fmt::format("expected a 32-bit integer default, found '{}'", w.text));
         }
       }
-      declare([&] { schema_.add_attribute(owner, name, value); }, at);
+      declare([&] { schema_.add_attribute(m.owner, m.name, value); }, m.at);
     } else {
       fail(words_.front(), fmt::format("expected 'kind', 'port' or 'attribute', found '{}'", key));
     }
@@ -106,7 +105,14 @@ private:
     return static_cast<unsigned>(std::stoul(w.text));
   }
   /// OWNER.NAME: the owner kind, the member's name, and where it was written.
-  std::tuple<KindId, std::string, Word> member() {
+  // A struct, not a tuple: clang 14 (the fuzz build) cannot capture structured
+  // bindings in a lambda.
+  struct Member {
+    KindId owner;
+    std::string name;
+    Word at;
+  };
+  Member member() {
     const Word& w = next("OWNER.NAME");
     auto dot = w.text.find('.');
     if (dot == std::string::npos || dot == 0 || dot + 1 == w.text.size())
