@@ -61,7 +61,7 @@ Cap parse_cap(std::string_view text, const std::string& where) {
       std::string name(in.token_on_line());
       if (name.size() < 2 || name[0] != 'i' || inside.count(name))
         in.fail(fmt::format("{} is not a new inside node", quote_token(name)), "write 'node iN X Y Z' with a name not used above");
-      Vec3 p = in.point(name);
+      Vec3 p = in.point(quote_token(name));  // the name may be any bytes but blanks
       inside.emplace(name, static_cast<std::uint32_t>(cap.inside.size()));
       cap.inside.push_back(p);
     } else if (keyword == "hex") {
