@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "engine/quoted.hpp"
 #include "engine/rule_parser.hpp"
 
 namespace loom::engine {
@@ -57,7 +58,7 @@ public:
         if (w.text == "cyclic") order = PortOrder::cyclic;
         else if (w.text == "required") presence = PortPresence::required;
         else if (w.text == "->") break;
-        else fail(w, fmt::format("expected 'cyclic', 'required' or '->', found '{}'", w.text));
+        else fail(w, fmt::format("expected 'cyclic', 'required' or '->', found {}", quoted(w.text)));
       }
       const Word& target = next("the kind the port points at");
       KindId to = kind(target);
@@ -73,14 +74,15 @@ public:
           if (used != w.text.size() || v < INT32_MIN || v > INT32_MAX) throw std::out_of_range(w.text);
           value = static_cast<std::int32_t>(v);
         } catch (const std::logic_error&) {
-          fail(w, fmt::format("expected a 32-bit integer default, found '{}'", w.text));
+          fail(w, fmt::format("expected a 32-bit integer default, found {}", quoted(w.text)));
         }
       }
       declare([&] { schema_.add_attribute(m.owner, m.name, value); }, m.at);
     } else {
-      fail(words_.front(), fmt::format("expected 'kind', 'port' or 'attribute', found '{}'", key));
+      fail(words_.front(), fmt::format("expected 'kind', 'port' or 'attribute', found {}", quoted(key)));
     }
-    if (pos_ < words_.size()) fail(words_[pos_], fmt::format("unexpected '{}' at the end of the line", words_[pos_].text));
+    if (pos_ < words_.size())
+      fail(words_[pos_], fmt::format("unexpected {} at the end of the line", quoted(words_[pos_].text)));
   }
 
 private:
@@ -96,12 +98,15 @@ private:
   }
   KindId kind(const Word& w) const {
     auto k = schema_.find_kind(w.text);
-    if (!k) fail(w, fmt::format("unknown kind '{}' (declare it first with 'kind {}')", w.text, w.text));
+    if (!k)
+      fail(w, fmt::format("unknown kind {} (declare it first with 'kind {}')", quoted(w.text),
+                          printable(w.text.substr(0, 40))));
     return *k;
   }
   unsigned number(const Word& w) const {
-    if (w.text.empty() || w.text.size() > 3 || !std::all_of(w.text.begin(), w.text.end(), ::isdigit))
-      fail(w, fmt::format("expected a number of slots (1 to 255), found '{}'", w.text));
+    const auto digit = [](char c) { return c >= '0' && c <= '9'; };  // ::isdigit(char) is UB past ASCII
+    if (w.text.empty() || w.text.size() > 3 || !std::all_of(w.text.begin(), w.text.end(), digit))
+      fail(w, fmt::format("expected a number of slots (1 to 255), found {}", quoted(w.text)));
     return static_cast<unsigned>(std::stoul(w.text));
   }
   /// OWNER.NAME: the owner kind, the member's name, and where it was written.
@@ -116,7 +121,7 @@ private:
     const Word& w = next("OWNER.NAME");
     auto dot = w.text.find('.');
     if (dot == std::string::npos || dot == 0 || dot + 1 == w.text.size())
-      fail(w, fmt::format("expected OWNER.NAME, e.g. triangle.vertex, found '{}'", w.text));
+      fail(w, fmt::format("expected OWNER.NAME, e.g. triangle.vertex, found {}", quoted(w.text)));
     Word owner{w.text.substr(0, dot), w.column};
     return {kind(owner), w.text.substr(dot + 1), w};
   }
