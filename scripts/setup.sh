@@ -8,6 +8,9 @@ cd "$(dirname "$0")/.."
 packages=(g++ cmake ninja-build pkg-config libboost-graph-dev libfmt-dev doctest-dev
           libcli11-dev nlohmann-json3-dev libeigen3-dev libgraphviz-dev graphviz
           libgmsh-dev gmsh libnauty2-dev liblbfgspp-dev)
+# Callers that need more name it (scripts/fuzz.sh: clang and libFuzzer).
+read -r -a extra <<< "${LOOM_EXTRA_PACKAGES:-}"
+packages+=("${extra[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -22,4 +25,8 @@ fi
 # Extra cmake arguments pass through.
 build="${LOOM_BUILD_DIR:-build}"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${LOOM_BUILD_TYPE:-RelWithDebInfo}" "$@" >/dev/null
-cmake --build "$build" --parallel "$(nproc)"
+# $LOOM_BUILD_TARGETS (space-separated) builds only those, e.g. the fuzzers.
+read -r -a targets <<< "${LOOM_BUILD_TARGETS:-}"
+only=()
+if ((${#targets[@]})); then only=(--target "${targets[@]}"); fi
+cmake --build "$build" --parallel "$(nproc)" "${only[@]}"

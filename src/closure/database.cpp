@@ -108,9 +108,10 @@ Database::Entry entry_of_mesh(const Code& code, const std::vector<Hex>& hexes) {
   return e;
 }
 
-Database Database::load(const std::filesystem::path& file) {
-  const std::string text = read_input_file(file);
-  TextScanner in(text, file.string(), '#');
+Database Database::load(const std::filesystem::path& file) { return parse(read_input_file(file), file.string()); }
+
+Database Database::parse(std::string_view text, const std::string& where) {
+  TextScanner in(text, where, '#');
   in.set_line_mode(true);
   Database db;
   const std::string hint = "rebuild it with scripts/make-database.sh";

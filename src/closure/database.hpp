@@ -21,6 +21,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -51,6 +53,8 @@ public:
                         const std::function<void(int hexes, std::size_t boundaries)>& progress = {});
   /// Throws InputError naming the file and line for anything it cannot read.
   static Database load(const std::filesystem::path& file);
+  /// The same from the file's text; `where` names it in errors.
+  static Database parse(std::string_view text, const std::string& where);
   /// Writes every entry, in order, atomically.
   void save(const std::filesystem::path& file) const;
 

@@ -40,12 +40,13 @@ std::optional<CapRole> parse_role(std::string_view s, const std::map<std::string
   return std::nullopt;
 }
 
-Cap read_cap(const std::filesystem::path& file) {
-  const std::string text = read_input_file(file);
-  TextScanner in(text, file.string(), '#');
+}  // namespace
+
+Cap parse_cap(std::string_view text, const std::string& where) {
+  TextScanner in(text, where, '#');
   in.set_line_mode(true);
   Cap cap;
-  cap.source = file.string();
+  cap.source = where;
   std::map<std::string, std::uint32_t, std::less<>> inside;
   bool have_even = false;
   while (!in.at_end()) {
@@ -60,7 +61,7 @@ Cap read_cap(const std::filesystem::path& file) {
       std::string name(in.token_on_line());
       if (name.size() < 2 || name[0] != 'i' || inside.count(name))
         in.fail(fmt::format("{} is not a new inside node", quote_token(name)), "write 'node iN X Y Z' with a name not used above");
-      Vec3 p = in.point(name);
+      Vec3 p = in.point(quote_token(name));  // the name may be any bytes but blanks
       inside.emplace(name, static_cast<std::uint32_t>(cap.inside.size()));
       cap.inside.push_back(p);
     } else if (keyword == "hex") {
@@ -81,11 +82,9 @@ Cap read_cap(const std::filesystem::path& file) {
       in.fail(fmt::format("unexpected {} at the end of the line", quote_token(extra)), "remove it");
     in.next_record();
   }
-  if (!have_even || cap.hexes.empty()) fail_input(file.string(), "a cap needs an 'even' line and hexes", "see docs/fill.md");
+  if (!have_even || cap.hexes.empty()) fail_input(where, "a cap needs an 'even' line and hexes", "see docs/fill.md");
   return cap;
 }
-
-}  // namespace
 
 std::vector<Cap> load_caps(const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> files;
@@ -95,7 +94,7 @@ std::vector<Cap> load_caps(const std::filesystem::path& dir) {
   if (ec) fail_input(dir.string(), "cannot read the caps directory", "point LOOM_RULES at a rules directory with fill/");
   std::sort(files.begin(), files.end());
   std::vector<Cap> caps;
-  for (const auto& f : files) caps.push_back(read_cap(f));
+  for (const auto& f : files) caps.push_back(parse_cap(read_input_file(f), f.string()));
   for (std::uint32_t even = 0; even < 4; ++even)
     if (std::none_of(caps.begin(), caps.end(), [&](const Cap& c) { return c.even_edge == even; }))
       fail_input(dir.string(), fmt::format("no cap with even wall {}", edge_names[even]),

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "src/mesh/vec3.hpp"
@@ -37,6 +38,10 @@ struct Cap {
   std::vector<std::array<CapRole, 8>> hexes;  ///< VTK node order, positive in cap coordinates
   std::string source;                 ///< file it was read from
 };
+
+/// One cap from the text of a .cap file; `where` names it in errors. Throws
+/// loom::InputError naming the line of anything malformed.
+Cap parse_cap(std::string_view text, const std::string& where);
 
 /// The caps in `dir` (*.cap, sorted by name). Throws loom::InputError naming
 /// the file and line of a malformed line, and when some even edge has no cap.

@@ -37,7 +37,7 @@ RawMesh parse_obj(std::string_view text, const std::string& where) {
   in.set_line_mode(true);
   RawMesh mesh;
   mesh.node_numbering_base = 1;
-  const bool ends_with_newline = text.back() == '\n';
+  const bool ends_with_newline = !text.empty() && text.back() == '\n';
   while (!in.at_end()) {
     std::string_view keyword = in.token();
     if (keyword == "v") {
