@@ -1,12 +1,9 @@
 #include "tests/fuzz/fuzz_targets.hpp"
 
-#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include "engine/rewriter.hpp"
@@ -100,25 +97,11 @@ Outcome database(std::string_view bytes) {
   }
 }
 
-// Strategy::parse reads a strategy file only by its path, so the bytes go
-// through a file of this process's own. Kept thin on purpose: the strategy
-// language is being rewritten, and this target changes with it. Its messages
-// quote words as written, raw bytes and all (found by fuzzing; the CLI's
-// one_line() repairs them), so only the exception type is checked until then.
-struct ScratchFile {
-  std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("loom-fuzz-strategy-" + std::to_string(getpid()));
-  ~ScratchFile() { std::filesystem::remove(path); }
-};
-
 Outcome strategy(std::string_view bytes) {
-  static const ScratchFile file;
-  std::ofstream(file.path, std::ios::binary | std::ios::trunc)
-      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   try {
-    engine::Strategy::parse(file.path.string());
+    engine::Strategy::parse_text(std::string(bytes), "fuzz.strategy");
     return std::nullopt;
-  } catch (const std::invalid_argument& e) {
+  } catch (const engine::RuleError& e) {
     return e.what();
   }
 }
@@ -133,7 +116,7 @@ constexpr std::array<Target, 10> all_targets{{
     {"schema", schema, 1024},
     {"cap", cap, 4096},
     {"database", database, 4096},
-    {"strategy", strategy, 256, false},
+    {"strategy", strategy, 4096},
 }};
 
 }  // namespace
