@@ -193,15 +193,6 @@ Strategy builtin(const std::string& source, StrategyNode apply) {
   return s;
 }
 
-template <class Nodes, class F>
-void each_node(Nodes& nodes, F&& f) {
-  for (auto& n : nodes) {
-    f(n);
-    each_node(n.body, f);
-    each_node(n.otherwise, f);
-  }
-}
-
 }  // namespace
 
 Strategy Strategy::parse_text(const std::string& text, const std::string& file) {
@@ -246,15 +237,6 @@ Strategy Strategy::with_random_picks() const {
     });
   if (s.source.find("random picks") == std::string::npos) s.source += " (random picks)";
   return s;
-}
-
-std::vector<std::pair<std::string, ast::Pos>> Strategy::rule_names() const {
-  std::vector<std::pair<std::string, ast::Pos>> names;
-  for (const auto& p : phases)
-    each_node(p.body, [&](const StrategyNode& n) {
-      for (const auto& r : n.rules) names.emplace_back(r, n.pos);
-    });
-  return names;
 }
 
 }  // namespace loom::engine

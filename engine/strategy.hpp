@@ -56,6 +56,16 @@ struct StrategyNode {
   std::size_t window = 64, branching = 3, max_backtracks = 200;
 };
 
+/// Calls f(node) for every node of `nodes`, nested ones included, parents first.
+template <class Nodes, class F>
+void each_node(Nodes& nodes, F&& f) {
+  for (auto& n : nodes) {
+    f(n);
+    each_node(n.body, f);
+    each_node(n.otherwise, f);
+  }
+}
+
 struct StrategyPhase {
   std::string name;
   std::vector<StrategyNode> body;
@@ -79,8 +89,6 @@ struct Strategy {
   bool random() const;
   /// The same program with every pick random (a pipeline's further attempts).
   Strategy with_random_picks() const;
-  /// Every rule name the program mentions, with where.
-  std::vector<std::pair<std::string, ast::Pos>> rule_names() const;
 };
 
 }  // namespace loom::engine

@@ -12,15 +12,6 @@ namespace loom::engine {
 
 namespace {
 
-template <class F>
-void each_node(const std::vector<StrategyNode>& nodes, F&& f) {
-  for (const StrategyNode& n : nodes) {
-    f(n);
-    each_node(n.body, f);
-    each_node(n.otherwise, f);
-  }
-}
-
 class Runner {
 public:
   Runner(Engine& engine, const Strategy& strategy, const StrategyDomain& domain)
