@@ -27,6 +27,10 @@ std::string dot_quote(const std::string& s) {
   return out + "\"";
 }
 
+/// Curved edges cost most of a layout: a 1,255-element step picture took 14 s
+/// with them and 0.3 s without. Larger pictures get straight ones.
+constexpr std::size_t kCurvedUpTo = 40;
+
 void write_dot(std::ostream& out, const Graph& g, const DotStyle& style) {
   const Schema& schema = g.schema();
   auto vertex_writer = [&](std::ostream& os, Id v) {
@@ -42,9 +46,12 @@ void write_dot(std::ostream& out, const Graph& g, const DotStyle& style) {
       os << ", color=\"#ff7000\", penwidth=2";
     os << "]";
   };
+  const std::size_t drawn = style.only.empty() ? g.size() : style.only.size();
   auto graph_writer = [&](std::ostream& os) {
     os << "label=" << dot_quote(style.graph_name) << ";\nnode [shape=box, fontsize=10];\nedge [fontsize=8];\n";
-    if (!style.layout.empty()) os << "layout=" << style.layout << "; overlap=false; splines=true;\n";
+    if (!style.layout.empty())
+      os << "layout=" << style.layout << "; overlap=false; splines=" << (drawn <= kCurvedUpTo ? "true" : "line")
+         << ";\n";
   };
   if (style.only.empty()) {
     boost::write_graphviz(out, g, vertex_writer, edge_writer, graph_writer);

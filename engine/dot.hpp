@@ -15,7 +15,8 @@ struct DotStyle {
   /// Elements drawn highlighted (e.g. the elements of a match).
   std::unordered_set<Id> highlight;
   std::string graph_name = "G";
-  /// Graphviz layout engine named in the DOT text (empty: the renderer's default).
+  /// Graphviz layout engine named in the DOT text (empty: the renderer's default),
+  /// with curved edges up to 40 elements drawn and straight ones above.
   std::string layout;
   /// When not empty, only these elements (and incidences between them) are drawn.
   std::unordered_set<Id> only;

@@ -220,6 +220,10 @@ int run(const Options& o) {
     throw rule_error(e);
   }
   if (progress) std::cerr << "\r" << std::string(60, ' ') << "\r";
+  if (steps) {
+    budget.stage("drawing the step pictures");
+    steps->render();
+  }
   budget.commit();
 
   // Diagnostics describe the run whatever its outcome; the mesh is written only on success.

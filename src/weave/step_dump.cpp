@@ -21,16 +21,24 @@ StepDumper::StepDumper(std::filesystem::path dir, bool svg) : dir_(std::move(dir
 void StepDumper::emit(const std::string& stem, const std::string& dot) {
   write_text_atomically(dir_ / (stem + ".dot"), dot);
   written_.push_back(dir_ / (stem + ".dot"));
-  if (svg_) {
-    stc::write_svg(dir_ / (stem + ".svg"), dot, failures_);
-    written_.push_back(dir_ / (stem + ".svg"));
+  if (svg_) to_draw_.emplace_back(dir_ / (stem + ".svg"), dot);
+}
+
+std::size_t StepDumper::render() {
+  const std::size_t drawn = to_draw_.size();
+  for (auto& [svg, dot] : to_draw_) {
+    stc::write_svg(svg, dot, failures_);
+    written_.push_back(svg);
   }
+  to_draw_.clear();
+  return drawn;
 }
 
 void StepDumper::clear() {
   std::error_code ec;
   for (const auto& file : written_) std::filesystem::remove(file, ec);
   written_.clear();
+  to_draw_.clear();
   failures_ = {};
 }
 
