@@ -2,7 +2,7 @@
 //
 //   bench_closure [--quads A-B] [--randquad LIST] [--seeds N] [--shapes]
 //                 [--pipeline] [--expansions N] [--weight W] [--database FILE]
-//                 [--shard K/N] [--csv FILE]
+//                 [--shard K/N] [--csv FILE [--resume]]
 //   bench_closure --merge A.csv B.csv ...
 //
 // Inputs: every 3-connected sphere quadrangulation with A..B quads (gen
@@ -16,14 +16,17 @@
 // --pipeline it runs what `loom weave` does by default (the shipped rules, 16
 // attempts, cavity closure, the whole-surface fill last) and says which stage
 // made each mesh. --shard K/N runs inputs K-1, K-1+N, ...; --csv writes one
-// row per input; --merge sums shard CSVs. Figures, not a test: the machine is
+// row per input (--resume: after the rows FILE already has, the inputs it
+// lacks); --merge sums shard CSVs. Figures, not a test: the machine is
 // shared, compare within a run.
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <random>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -189,7 +192,7 @@ int main(int argc, char** argv) {
               csv;
   std::vector<std::string> merge;
   int seeds = 3;
-  bool shapes = false, pipeline = false;
+  bool shapes = false, pipeline = false, resume = false;
   closure::ClosureOptions options;
   app.add_option("--quads", quads, "3-connected quadrangulations with these quad counts: A-B (even ones), or a list (default 6-16; '' for none)");
   app.add_option("--randquad", randquads, "random quadrangulations: a list of F, or A-B:STEP");
@@ -201,19 +204,22 @@ int main(int argc, char** argv) {
   app.add_option("--growth", options.max_growth, "fronts larger than the start by more than this are not explored (default 8)");
   app.add_option("--database", database, "database file ('' for none)");
   app.add_option("--shard", shard, "run only inputs K-1, K-1+N, ... (K/N)");
-  app.add_option("--csv", csv, "write one row per input");
+  auto* csv_option = app.add_option("--csv", csv, "write one row per input");
   app.add_option("--merge", merge, "sum these CSVs instead of running");
+  app.add_flag("--resume", resume, "keep the rows --csv already has, run only the inputs it lacks, and add theirs")
+      ->needs(csv_option);
   loom::bench::parse_or_exit(app, argc, argv);
 
   std::vector<Outcome> outcomes;
+  auto read_rows = [&outcomes](const std::string& file) {
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line))
+      if (!line.empty()) outcomes.push_back(Outcome::parse(line));
+  };
   if (!merge.empty()) {
-    for (const auto& f : merge) {
-      std::ifstream in(f);
-      std::string line;
-      std::getline(in, line);
-      while (std::getline(in, line))
-        if (!line.empty()) outcomes.push_back(Outcome::parse(line));
-    }
+    for (const auto& f : merge) read_rows(f);
     print_summary(outcomes, std::any_of(outcomes.begin(), outcomes.end(), [](const Outcome& o) { return !o.made_by.empty(); }));
     return 0;
   }
@@ -253,13 +259,20 @@ int main(int argc, char** argv) {
   const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
   std::cerr << fmt::format("{} inputs; database {} boundaries; budget {} expansions, weight {}\n", inputs.size(), db.size(),
                            options.limits.max_expansions, options.limits.weight);
+  // A run stopped halfway (a session's end, a node's time limit) goes on where it stopped.
+  std::set<std::string> done;
+  if (resume && std::filesystem::exists(csv)) {
+    read_rows(csv);
+    for (const Outcome& o : outcomes) done.insert(o.input);
+  }
   std::ofstream out;
   if (!csv.empty()) {
-    out.open(csv);
-    out << Outcome::header() << "\n";
+    out.open(csv, done.empty() ? std::ios::trunc : std::ios::app);
+    if (done.empty()) out << Outcome::header() << "\n";
   }
   for (std::size_t i = static_cast<std::size_t>(shard_k - 1); i < inputs.size(); i += static_cast<std::size_t>(shard_n)) {
     const Input in = inputs[i]();
+    if (done.count(in.name)) continue;
     Outcome o;
     o.input = in.name, o.group = in.group, o.quads = in.surface.quads.size();
     if (pipeline) {
