@@ -91,7 +91,7 @@ private:
   }
   static bool is_keyword(const std::string& w) {
     for (const char* k : {"apply", "repeat", "try", "else", "backtrack", "phase", "seed", "all", "except", "goal",
-                          "window", "branching", "max", "priority", "sequence", "random", "when"})
+                          "window", "branching", "max", "priority", "sequence", "random", "when", "search", "depth"})
       if (w == k) return true;
     return false;
   }
@@ -111,6 +111,13 @@ private:
       if (!std::isdigit(static_cast<unsigned char>(c))) fail(w, fmt::format("expected {} (a non-negative integer)", what));
     ++pos_;
     return std::stoull(w.text);
+  }
+
+  std::uint64_t positive(const char* what) {
+    const Word& w = peek();
+    const std::uint64_t v = number(what);
+    if (v == 0) fail(w, fmt::format("expected {} of at least 1 (with 0 a search tries nothing)", what));
+    return v;
   }
 
   std::vector<StrategyNode> block(int depth) {
@@ -160,11 +167,25 @@ private:
       if (peek().text != "apply") fail(peek(), "backtrack takes one 'apply' (its alternatives are that apply's matches)");
       n.body.push_back(node(depth + 1));
       expect("}");
+    } else if (accept("search")) {
+      n.op = StrategyNode::Op::search;
+      expect("{");
+      for (;;) {
+        if (accept("goal")) n.goal = name("a measure");
+        else if (accept("depth")) n.depth = positive("a depth");
+        else if (accept("branching")) n.branching = positive("a branching");
+        else if (accept("max")) n.max_tried = positive("a number of applications");
+        else break;
+      }
+      if (n.goal.empty()) fail(peek(), "search needs 'goal MEASURE' first (the goal is that the measure reaches 0)");
+      if (peek().text != "apply") fail(peek(), "search takes one 'apply' (its branches are that apply's matches)");
+      n.body.push_back(node(depth + 1));
+      expect("}");
     } else if (accept("when")) {
       n.op = StrategyNode::Op::when;
       n.goal = name("a measure");
     } else {
-      fail(peek(), "expected 'apply', 'repeat', 'try', 'backtrack', 'when' or '}'");
+      fail(peek(), "expected 'apply', 'repeat', 'try', 'backtrack', 'search', 'when' or '}'");
     }
     return n;
   }

@@ -28,6 +28,16 @@
 //                      names, at zero) is met. It also stops, failing, once the
 //                      measure has not reached a new minimum for 4 x minimum + 256
 //                      applications (a front rolling round without shrinking).
+//   search { goal MEASURE  depth D  branching B  max N  apply PICK RULES }
+//                      iterative deepening over applications: depth 1, 2, ...
+//                      D, each state trying the first B matches of the apply in
+//                      its pick order. The first state found whose measure is 0
+//                      (fewest applications, then pick order) is kept, and the
+//                      node succeeds; the domain sees only the applications on
+//                      the path to it. Otherwise, after depth D or N
+//                      applications tried, the graph is as before and it fails.
+//                      Counted in applications, never seconds: the same on
+//                      every machine. Defaults: depth 4, branching 3, max 10000.
 //   when MEASURE       succeeds when the measure is 0, else fails (and so
 //                      ends its block)
 // A block runs its nodes in turn and fails at the first that fails; what the
@@ -41,7 +51,7 @@
 namespace loom::engine {
 
 struct StrategyNode {
-  enum class Op { apply, repeat, try_else, backtrack, when };
+  enum class Op { apply, repeat, try_else, backtrack, search, when };
   enum class Pick { priority, sequence, random };
   Op op = Op::apply;
   ast::Pos pos;
@@ -51,9 +61,10 @@ struct StrategyNode {
   std::vector<std::string> rules;   ///< named (or excepted, with `all`)
   // repeat: body; try_else: body, otherwise; backtrack: body (one apply)
   std::vector<StrategyNode> body, otherwise;
-  // backtrack, when
+  // backtrack, search, when
   std::string goal;
-  std::size_t window = 64, branching = 3, max_backtracks = 200;
+  std::size_t window = 64, branching = 3, max_backtracks = 200;  ///< backtrack
+  std::size_t depth = 4, max_tried = 10'000;                     ///< search (and branching)
 };
 
 /// Calls f(node) for every node of `nodes`, nested ones included, parents first.

@@ -1,7 +1,9 @@
 #include "engine/strategy_run.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <deque>
+#include <functional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -32,8 +34,10 @@ public:
       if (stop_) break;
       phase_ = &out_.phases.emplace_back(PhaseFigures{p.name});
       const std::size_t before = eng_.counters().steps;
+      const auto start = std::chrono::steady_clock::now();
       block(p.body);
       phase_->steps = eng_.counters().steps - before;
+      phase_->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     return out_;
   }
@@ -71,6 +75,7 @@ private:
         return block(n.otherwise);
       }
       case StrategyNode::Op::backtrack: return backtrack(n);
+      case StrategyNode::Op::search: return search(n);
       case StrategyNode::Op::when: return domain_.measures.at(n.goal)() == 0;
     }
     return false;
@@ -156,6 +161,42 @@ private:
     return goal() == 0;
   }
 
+  // Iterative deepening: memory is one checkpoint a level, and the first goal
+  // found is one of fewest applications. The path to it is applied again
+  // from the start, so that the domain sees each kept application on the
+  // graph it was made on, and none of those undone.
+  bool search(const StrategyNode& n) {
+    const Engine::Selection s = selection_.at(&n.body.front());
+    const auto& goal = domain_.measures.at(n.goal);
+    if (goal() == 0) return true;
+    std::vector<Match> path, found;
+    std::size_t tried = 0;
+    std::function<bool(std::size_t)> deepen = [&](std::size_t depth) {
+      for (Match& m : eng_.choices(s, n.branching)) {
+        if (tried >= n.max_tried || limit_reached()) return false;
+        const Graph::Checkpoint before = eng_.mark();
+        path.push_back(m);
+        eng_.apply(std::move(m));
+        ++tried;
+        const bool done = goal() == 0 || (depth > 1 && deepen(depth - 1));
+        if (done && found.empty()) found = path;
+        eng_.undo(before);
+        eng_.release(before);
+        path.pop_back();
+        if (done) return true;
+      }
+      return false;
+    };
+    for (std::size_t depth = 1; depth <= n.depth && found.empty() && tried < n.max_tried && !stop_; ++depth)
+      deepen(depth);
+    phase_->searched += tried;
+    for (Match& m : found) {
+      eng_.apply(std::move(m), &app_);
+      after();
+    }
+    return !found.empty();
+  }
+
   Engine& eng_;
   const Strategy& strategy_;
   const StrategyDomain& domain_;
@@ -175,7 +216,9 @@ void check_strategy(const Strategy& strategy, const std::vector<Rule>& rules, co
       for (const std::string& name : n.rules)
         if (std::none_of(rules.begin(), rules.end(), [&](const Rule& r) { return r.name == name; }))
           throw RuleError(strategy.source, n.pos, fmt::format("no rule '{}' is loaded; see 'loom rules list'", name));
-      if ((n.op == StrategyNode::Op::backtrack || n.op == StrategyNode::Op::when) && std::find(measures.begin(), measures.end(), n.goal) == measures.end()) {
+      const bool has_goal = n.op == StrategyNode::Op::backtrack || n.op == StrategyNode::Op::search ||
+                            n.op == StrategyNode::Op::when;
+      if (has_goal && std::find(measures.begin(), measures.end(), n.goal) == measures.end()) {
         std::string known;
         for (const auto& m : measures) known += (known.empty() ? "" : ", ") + m;
         throw RuleError(strategy.source, n.pos,

@@ -1,6 +1,6 @@
 #pragma once
 // Running a strategy (strategy.hpp) on an engine: the interpreter of its
-// phases, applies, repeats, tries and backtracking searches.
+// phases, applies, repeats, tries, backtracking and iterative-deepening searches.
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -25,6 +25,8 @@ struct PhaseFigures {
   std::string name;
   std::size_t steps = 0;       ///< applications kept or undone
   std::size_t backtracks = 0;  ///< choices undone to take another
+  std::size_t searched = 0;    ///< applications a search tried (kept or not)
+  double seconds = 0;
 };
 
 struct StrategyOutcome {

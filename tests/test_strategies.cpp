@@ -5,6 +5,8 @@
 #include <fstream>
 #include <string>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "engine/engine.hpp"
@@ -82,7 +84,7 @@ TEST_CASE("a broken strategy is refused with file:line:column and what was expec
   CHECK(parse_error("phase p { apply all ! }") ==
         "s.strategy:1:21: unexpected character '!'; a strategy holds words, numbers and braces");
   CHECK(parse_error("phase p { frobnicate }") ==
-        "s.strategy:1:11: expected 'apply', 'repeat', 'try', 'backtrack', 'when' or '}', found 'frobnicate'");
+        "s.strategy:1:11: expected 'apply', 'repeat', 'try', 'backtrack', 'search', 'when' or '}', found 'frobnicate'");
   std::string deep = "phase p ";
   for (int i = 0; i < 300; ++i) deep += "{ repeat ";
   CHECK(parse_error(deep).find("blocks nested more than 100 deep") != std::string::npos);
@@ -97,7 +99,7 @@ TEST_CASE("a broken strategy is refused with file:line:column and what was expec
     return "";
   };
   CHECK(checked("phase p { apply cross nosuch }") == "c.strategy:1:11: no rule 'nosuch' is loaded; see 'loom rules list'");
-  CHECK(checked("phase p { when depth }") == "c.strategy:1:11: no measure 'depth' to make a goal of; this domain has: front");
+  CHECK(checked("phase p { when volume }") == "c.strategy:1:11: no measure 'volume' to make a goal of; this domain has: front");
   CHECK(checked("phase p { apply all except cross }").empty());
 }
 
@@ -165,4 +167,55 @@ TEST_CASE("loom weave runs a strategy file, reports its phases, and refuses a br
   CHECK(r.err.find("bad.strategy:2:3: no rule 'nosuch' is loaded") != std::string::npos);
   CHECK(r.err.find("docs/strategies.md") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "b.vtk"));
+}
+
+TEST_CASE("search: the fewest applications that reach the goal, the domain seeing only those; else nothing changes") {
+  CHECK(parse_error("phase p { search { apply all } }") ==
+        "s.strategy:1:20: search needs 'goal MEASURE' first (the goal is that the measure reaches 0), found 'apply'");
+  CHECK(parse_error("phase p { search { goal front depth 0 apply all } }") ==
+        "s.strategy:1:37: expected a depth of at least 1 (with 0 a search tries nothing), found '0'");
+  CHECK(parse_error("phase p { search { goal front repeat { apply all } } }") ==
+        "s.strategy:1:31: search takes one 'apply' (its branches are that apply's matches), found 'repeat'");
+  const auto defaults = engine::Strategy::parse_text("phase p { search { goal front apply all } }", "d.strategy");
+  const auto& node = defaults.phases.at(0).body.at(0);
+  CHECK((node.op == engine::StrategyNode::Op::search && node.depth == 4 && node.branching == 3 &&
+         node.max_tried == 10'000));
+
+  // How many applications the plain weave of a 1x1x2 box takes, and what a
+  // search allowed one fewer, or that many, finds.
+  Bench greedy(gen::box(1, 1, 2));
+  greedy.run("phase p { repeat { apply all except pillow_improper } }");
+  REQUIRE(greedy.stc.whiskers() == 0);
+  const std::size_t plain = greedy.eng.counters().steps;
+  REQUIRE(plain >= 2);
+
+  const std::string rules = " branching 6 max 100000 apply all except pillow_improper } }";
+  Bench shallow(gen::box(1, 1, 2));
+  const std::size_t elements = shallow.stc.graph().size();
+  std::size_t seen = 0;
+  shallow.domain.after_step = [&](const engine::Application&) { ++seen; };
+  auto out = shallow.run(fmt::format("phase p {{ search {{ goal front depth {}", plain - 1) + rules);
+  CHECK(shallow.stc.whiskers() > 0);
+  CHECK(shallow.stc.graph().size() == elements);
+  CHECK(shallow.stc.hexes() == 0);
+  CHECK(seen == 0);
+  CHECK(out.phases[0].searched > 0);
+
+  auto trace = [&](std::vector<std::string>& lines) {
+    Bench b(gen::box(1, 1, 2));
+    b.domain.after_step = [&](const engine::Application& a) {
+      lines.push_back(fmt::format("{} {}", a.rule->name, fmt::join(a.matched.elements, ",")));
+      CHECK(b.stc.check_invariants().empty());
+    };
+    auto o = b.run(fmt::format("phase p {{ search {{ goal front depth {}", plain) + rules);
+    CHECK(b.stc.whiskers() == 0);
+    CHECK(b.stc.hexes() == greedy.stc.hexes());
+    CHECK(o.phases[0].searched >= lines.size());
+    return o;
+  };
+  std::vector<std::string> first, second;
+  trace(first);
+  trace(second);
+  CHECK(first.size() == plain);  // none shorter: the search one shorter failed
+  CHECK(first == second);
 }

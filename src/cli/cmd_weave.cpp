@@ -94,7 +94,11 @@ nlohmann::json report_json(const Options& o, const loom::pipeline::MeshingResult
   j["backtracks"] = r.weave.backtracks;
   j["phases"] = nlohmann::json::array();
   for (const auto& p : r.weave.phases)
-    j["phases"].push_back({{"name", p.name}, {"steps", p.steps}, {"backtracks", p.backtracks}});
+    j["phases"].push_back({{"name", p.name},
+                           {"steps", p.steps},
+                           {"backtracks", p.backtracks},
+                           {"searched", p.searched},
+                           {"seconds", p.seconds}});
   j["closed"] = r.weave.closed;
   j["steps"] = r.weave.steps;
   j["rule_applications"] = r.weave.applications;
