@@ -2,6 +2,8 @@
 // gluings, the cavities a weave leaves and their closure.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <map>
 #include <random>
 
 #include "engine/rule_compiler.hpp"
@@ -13,6 +15,7 @@
 #include "src/gen/generators.hpp"
 #include "src/pipeline/cavity_closure.hpp"
 #include "src/pipeline/mesh_surface.hpp"
+#include "src/quadmap/hex_glue.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
 #include "src/util/error.hpp"
@@ -163,6 +166,41 @@ TEST_CASE("woven hexes that could not be part of a valid mesh are peeled off") {
   REQUIRE(c.kept.size() == 1);
   CHECK(c.kept[0] == h);
   CHECK(c.pieces.empty());
+}
+
+TEST_CASE("pulling back round a stuck front takes off the hexes against it and the nodes only they used") {
+  // Three hexes in a row; the front stuck on the face between the second and third.
+  const HexMesh row = gen::hexgrid(3, 1, 1);
+  REQUIRE(row.hexes.size() == 3);
+  std::map<std::array<std::uint32_t, 4>, int> uses;
+  std::vector<Quad> between;
+  for (const Hex& h : row.hexes)
+    for (const Quad& f : quadmap::outward_faces(h)) {
+      std::array<std::uint32_t, 4> k = f;
+      std::sort(k.begin(), k.end());
+      if (++uses[k] == 2) between.push_back(f);
+    }
+  REQUIRE(between.size() == 2);
+  const Quad stuck = std::max(between[0], between[1], [&](const Quad& a, const Quad& b) {
+    return row.points[a[0]][0] + row.points[a[2]][0] < row.points[b[0]][0] + row.points[b[2]][0];
+  });
+  const auto pulled = pipeline::without_hexes_on(row, {stuck}, 2);
+  const HexMesh& left = pulled.mesh;
+  REQUIRE(left.hexes.size() == 1);
+  CHECK(pulled.kept == std::vector<std::size_t>{0});
+  // Points 0 and 1 stay, used or not; then the first hex's other corners.
+  const auto among_first_two = std::count_if(row.hexes[0].begin(), row.hexes[0].end(), [](std::uint32_t v) { return v < 2; });
+  CHECK(left.points.size() == static_cast<std::size_t>(2 + 8 - among_first_two));
+  CHECK(left.points[0] == row.points[0]);
+  CHECK(left.points[1] == row.points[1]);
+  // The hex kept is the first of the row, at the same places.
+  for (int i = 0; i < 8; ++i) CHECK(left.points[left.hexes[0][i]] == row.points[row.hexes[0][i]]);
+  // A front no hex touches takes nothing off.
+  const HexMesh all = pipeline::without_hexes_on(row, {}, 0).mesh;
+  REQUIRE(all.hexes.size() == row.hexes.size());
+  CHECK(all.points.size() == row.points.size());
+  for (std::size_t h = 0; h < row.hexes.size(); ++h)
+    for (int i = 0; i < 8; ++i) CHECK(all.points[all.hexes[h][i]] == row.points[row.hexes[h][i]]);
 }
 
 TEST_CASE("closure is deterministic: the same surface gives the same hexes, and the search from a random quadrangulation closes it") {

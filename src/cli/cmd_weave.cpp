@@ -118,7 +118,7 @@ nlohmann::json report_json(const Options& o, const loom::pipeline::MeshingResult
     j["closure"] = {{"woven_kept", c.woven}, {"woven_peeled", c.peeled}, {"cavities", c.cavities},
                     {"front_quads", c.front_quads}, {"searched", c.searched}, {"database", c.database},
                     {"filled", c.filled}, {"pillowed", c.pillowed}, {"filled_cavities", c.filled_cavities},
-                    {"fill_quads", c.fill_quads}, {"search_expanded", c.search.expanded},
+                    {"fill_quads", c.fill_quads}, {"pull_backs", c.pull_backs}, {"search_expanded", c.search.expanded},
                     {"search_states", c.search.generated}, {"search_seconds", c.search.seconds},
                     {"seconds", c.seconds}};
     if (!r.closure_failure.empty()) j["closure_failure"] = r.closure_failure;

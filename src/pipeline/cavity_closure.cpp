@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <set>
 
 #include "src/closure/cavities.hpp"
 #include "src/fill/fill.hpp"
 #include "src/geometry/boundary_layer.hpp"
+#include "src/quadmap/hex_glue.hpp"
 #include "src/util/error.hpp"
 
 namespace loom::pipeline {
@@ -14,6 +16,17 @@ namespace loom::pipeline {
 using closure::HexSource;
 
 namespace {
+
+/// A hex or a face by its corners alone, as a key.
+Hex sorted(Hex h) {
+  std::sort(h.begin(), h.end());
+  return h;
+}
+Hex sorted_face(const Quad& q) {
+  Hex k{q[0], q[1], q[2], q[3], 0, 0, 0, 0};
+  std::sort(k.begin(), k.begin() + 4);
+  return k;
+}
 
 /// The budget of a search on a front; `again`: a search on what another left.
 std::size_t budget_for(std::size_t front_quads, std::size_t least, bool again) {
@@ -122,21 +135,23 @@ struct Builder {
   }
 };
 
-}  // namespace
-
-ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, const closure::Database* db,
-                          const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  closure::Cavities cavities = closure::cavities_left(surface, woven.hexes);
+/// One round: the hexes of `start` kept as far as they can be part of a valid
+/// mesh, each cavity searched, and (with `caps`) filled where the search
+/// stopped short; without caps, the fronts it left are in `open`.
+ClosedMesh close_round(const QuadSurface& surface, const HexMesh& start, const std::vector<HexSource>& start_source,
+                       const closure::Database* db, const std::vector<fill::Cap>& caps,
+                       const closure::ClosureOptions& options, std::vector<Quad>& open) {
+  closure::Cavities cavities = closure::cavities_left(surface, start.hexes);
+  std::map<Hex, HexSource> source_of;
+  for (std::size_t h = 0; h < start.hexes.size(); ++h) source_of.emplace(sorted(start.hexes[h]), start_source[h]);
   Builder b;
-  b.out.mesh.points = woven.points;
-  b.placed.assign(woven.points.size(), true);
+  b.out.mesh.points = start.points;
+  b.placed.assign(start.points.size(), true);
   b.reserve_points(cavities.vertex_bound);
   ClosureReport& report = b.out.report;
-  report.woven = cavities.kept.size();
   report.peeled = cavities.peeled;
   report.cavities = cavities.pieces.size();
-  for (const Hex& h : cavities.kept) b.add(h, HexSource::woven);
+  for (const Hex& h : cavities.kept) b.add(h, source_of.at(sorted(h)));
   const std::size_t first_added = b.out.mesh.hexes.size();
   for (closure::Cavity& cavity : cavities.pieces) {
     report.front_quads += cavity.front.size();
@@ -168,6 +183,7 @@ ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, cons
     }
     if (!r.closed) {
       if (caps.empty()) {
+        open.insert(open.end(), r.left.front.quads.begin(), r.left.front.quads.end());
         b.out.complete = false;
         continue;
       }
@@ -178,10 +194,88 @@ ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, cons
     }
   }
   b.estimate_positions();
-  b.out.on_boundary.assign(b.bound(), false);
-  for (std::size_t p = 0; p < surface.points.size(); ++p) b.out.on_boundary[p] = true;
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return std::move(b.out);
+}
+
+void add_up(ClosureReport& total, const ClosureReport& round) {
+  total.peeled += round.peeled;
+  total.search.expanded += round.search.expanded;
+  total.search.generated += round.search.generated;
+  total.search.seconds += round.search.seconds;
+  total.search.peak_open = std::max(total.search.peak_open, round.search.peak_open);
+}
+
+}  // namespace
+
+PulledBack without_hexes_on(const HexMesh& m, const std::vector<Quad>& front, std::size_t keep_points) {
+  std::set<Hex> stuck;
+  for (const Quad& q : front) stuck.insert(sorted_face(q));
+  PulledBack out;
+  HexMesh& kept = out.mesh;
+  std::vector<std::int64_t> renumbered(m.points.size(), -1);
+  for (std::size_t p = 0; p < keep_points; ++p) {
+    renumbered[p] = static_cast<std::int64_t>(p);
+    kept.points.push_back(m.points[p]);
+  }
+  for (std::size_t index = 0; index < m.hexes.size(); ++index) {
+    const Hex& h = m.hexes[index];
+    const auto faces = quadmap::outward_faces(h);
+    if (std::any_of(faces.begin(), faces.end(), [&](const Quad& f) { return stuck.count(sorted_face(f)) > 0; }))
+      continue;
+    Hex corners;
+    for (int i = 0; i < 8; ++i) {
+      std::int64_t& id = renumbered[h[i]];
+      if (id < 0) {
+        id = static_cast<std::int64_t>(kept.points.size());
+        kept.points.push_back(m.points[h[i]]);
+      }
+      corners[i] = static_cast<std::uint32_t>(id);
+    }
+    kept.hexes.push_back(corners);
+    out.kept.push_back(index);
+  }
+  return out;
+}
+
+ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, const closure::Database* db,
+                          const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  HexMesh current = woven;
+  std::vector<HexSource> current_source(woven.hexes.size(), HexSource::woven);
+  ClosureReport total;
+  ClosedMesh out;
+  for (std::size_t round = 0;; ++round) {
+    // The last round may fill; the others leave stuck fronts open, to pull back round them.
+    const bool last = round == kMostPullBacks;
+    std::vector<Quad> open;
+    out = close_round(surface, current, current_source, db, last ? caps : std::vector<fill::Cap>{}, options, open);
+    if (round == 0) {
+      total.cavities = out.report.cavities;
+      total.front_quads = out.report.front_quads;
+    }
+    add_up(total, out.report);
+    if (out.complete || open.empty() || last) break;
+    ++total.pull_backs;
+    PulledBack back = without_hexes_on(out.mesh, open, surface.points.size());
+    current = std::move(back.mesh);
+    current_source.clear();
+    for (std::size_t h : back.kept) current_source.push_back(out.source[h]);
+  }
+  // What the mesh holds, by source (hexes kept from earlier rounds included).
+  ClosureReport& report = out.report;
+  const ClosureReport last_round = report;
+  report = total;
+  report.filled = last_round.filled, report.pillowed = last_round.pillowed;
+  report.filled_cavities = last_round.filled_cavities, report.fill_quads = last_round.fill_quads;
+  for (HexSource s : out.source) {
+    if (s == HexSource::woven) ++report.woven;
+    if (s == HexSource::searched) ++report.searched;
+    if (s == HexSource::database) ++report.database;
+  }
+  out.on_boundary.assign(out.mesh.points.size(), false);
+  for (std::size_t p = 0; p < surface.points.size(); ++p) out.on_boundary[p] = true;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
 }
 
 }  // namespace loom::pipeline
