@@ -14,7 +14,9 @@ namespace loom {
 HexMesh read_hex_mesh(const std::filesystem::path& file);
 
 /// Writes a hex mesh atomically; the format follows the extension. `fields`
-/// (a value per hex each) go into the file as cell data.
+/// (a value per hex each) go into the file as cell data. Throws
+/// std::invalid_argument for a malformed field (wrong count, name not 1-32
+/// characters, an integer field's value not a 32-bit integer).
 void write_hex_mesh(const std::filesystem::path& file, const HexMesh& mesh, std::vector<CellField> fields = {});
 
 }  // namespace loom
