@@ -113,6 +113,8 @@ TEST_CASE("a surface file is not a hex mesh, and non-hex cells are rejected") {
     return "(no error)";
   };
   CHECK(message(dir / "m.obj").find("unknown hex mesh file format") != std::string::npos);
+  write_hex_mesh(dir / "m.exo", two_hexes());  // written, but not read back by Loom
+  CHECK(message(dir / "m.exo").find("does not read them") != std::string::npos);
   CHECK(message(dir / "missing.vtk").find("file not found") != std::string::npos);
 
   spit(dir / "tet.vtk",

@@ -320,7 +320,7 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
   auto o = std::make_shared<Options>();
   app.description("Weave a hex mesh whose boundary is exactly the given closed quad surface");
   app.add_option("SURFACE", o->surface, "closed all-quad surface (.obj .off .vtk .vtu .msh)")->required()->check(CLI::ExistingFile);
-  app.add_option("-o,--output", o->output, "hex mesh to write (.vtk .vtu .msh)")->required();
+  app.add_option("-o,--output", o->output, "hex mesh to write (.vtk .vtu .msh .exo .e)")->required();
   app.add_option("--rules", o->rules, "directory of *.rule files (default: the shipped rules/)");
   app.add_option("--strategy", o->strategy, "a strategy file (default: the rules' strategies/default.strategy, else priority), priority, random or sequence:RULE,RULE...");
   app.add_option("--check-rules", o->check_rules,

@@ -47,6 +47,9 @@ void write_hex_mesh(const std::filesystem::path& file, const HexMesh& mesh, std:
     case MeshFormat::msh:
       text = msh_text(table);
       break;
+    case MeshFormat::exodus:  // binary, written by the Exodus library itself
+      write_atomically(file, [&](const std::filesystem::path& tmp) { write_exodus(tmp, table, file.string()); });
+      return;
     case MeshFormat::obj:
     case MeshFormat::off:
       break;
