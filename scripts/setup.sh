@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build pkg-config libboost-graph-dev libfmt-dev doctest-dev
           libcli11-dev nlohmann-json3-dev libeigen3-dev libgraphviz-dev graphviz
-          libgmsh-dev gmsh libnauty2-dev liblbfgspp-dev)
+          libgmsh-dev gmsh libnauty2-dev liblbfgspp-dev libexodusii-dev)
 # Callers that need more name it (scripts/fuzz.sh: clang and libFuzzer).
 read -r -a extra <<< "${LOOM_EXTRA_PACKAGES:-}"
 packages+=("${extra[@]}")

@@ -120,11 +120,14 @@ TEST_CASE("loom weave closes what no weave closes; --closure none (or --no-fill)
             j["hex_sources"]["database"].get<std::size_t>() + j["hex_sources"]["filled"].get<std::size_t>() +
             j["hex_sources"]["pillow"].get<std::size_t>() ==
         j["hexes"].get<std::size_t>());
-  // Each hex's source as a cell field (0 woven ... 4 pillow), as many as hexes.
+  // Each hex's source (0 woven ... 4 pillow) and scaled Jacobian as cell fields, as many values as hexes.
   const std::string vtk = loom::test::slurp(dir / "out.vtk");
-  const auto field = vtk.find("SCALARS source int 1\nLOOKUP_TABLE default\n");
-  REQUIRE(field != std::string::npos);
-  CHECK(loom::test::count_lines(vtk.substr(field)) == 2 + j["hexes"].get<int>());
+  const auto source = vtk.find("SCALARS source int 1\nLOOKUP_TABLE default\n");
+  const auto quality = vtk.find("SCALARS scaled_jacobian double 1\nLOOKUP_TABLE default\n");
+  REQUIRE(source != std::string::npos);
+  REQUIRE(quality != std::string::npos);
+  CHECK(loom::test::count_lines(vtk.substr(source, quality - source)) == 2 + j["hexes"].get<int>());
+  CHECK(loom::test::count_lines(vtk.substr(quality)) == 2 + j["hexes"].get<int>());
   auto check = loom::test::run_cli("check " + (dir / "out.vtk").string() + " --boundary " + (dir / "box.obj").string());
   CHECK((check.status == 0 || check.out.find("criterion 7") != std::string::npos));  // only the geometry may fail
   std::filesystem::remove(dir / "out.vtk");

@@ -53,12 +53,19 @@ TEST_CASE("cell fields are written in every format, and the mesh still reads bac
   test::ScratchDir dir("hex-fields");
   const HexMesh mesh = two_hexes();
   const std::map<std::string, std::vector<std::string>> marks{
-      {".vtk", {"CELL_DATA 2", "SCALARS source int 1", "LOOKUP_TABLE default\n3\n-1\n"}},
-      {".vtu", {"<CellData Scalars=\"source\">", "Name=\"source\"", "          3\n          -1\n"}},
-      {".msh", {"$ElementData\n1\n\"source\"\n", "1 3\n2 -1\n$EndElementData"}}};
+      {".vtk",
+       {"CELL_DATA 2", "SCALARS source int 1", "LOOKUP_TABLE default\n3\n-1\n",
+        "SCALARS quality double 1\nLOOKUP_TABLE default\n0.30000000000000004\n-0.5\n"}},
+      {".vtu",
+       {"<CellData Scalars=\"source\">", "type=\"Int32\" Name=\"source\"", "          3\n          -1\n",
+        "type=\"Float64\" Name=\"quality\"", "          0.30000000000000004\n          -0.5\n"}},
+      {".msh",
+       {"$ElementData\n1\n\"source\"\n", "1 3\n2 -1\n$EndElementData", "$ElementData\n1\n\"quality\"\n",
+        "1 0.30000000000000004\n2 -0.5\n$EndElementData"}}};
+  const std::vector<CellField> fields{{"source", {3, -1}}, {"quality", {0.1 + 0.2, -0.5}, CellField::Kind::real}};
   for (const auto& ext : hex_extensions) {
     CAPTURE(ext);
-    write_hex_mesh(dir / ("m" + ext), mesh, {{"source", {3, -1}}});
+    write_hex_mesh(dir / ("m" + ext), mesh, fields);
     const std::string text = slurp(dir / ("m" + ext));
     for (const auto& mark : marks.at(ext)) CHECK(text.find(mark) != std::string::npos);
     HexMesh back = read_hex_mesh(dir / ("m" + ext));
@@ -66,6 +73,8 @@ TEST_CASE("cell fields are written in every format, and the mesh still reads bac
     CHECK(back.hexes == mesh.hexes);
   }
   CHECK_THROWS_AS(write_hex_mesh(dir / "bad.vtk", mesh, {{"source", {1}}}), std::invalid_argument);
+  CHECK_THROWS_AS(write_hex_mesh(dir / "bad.vtk", mesh, {{"source", {1, 0.5}}}), std::invalid_argument);
+  CHECK_THROWS_AS(write_hex_mesh(dir / "bad.vtk", mesh, {{std::string(33, 'a'), {1, 2}}}), std::invalid_argument);
   CHECK_FALSE(fs::exists(dir / "bad.vtk"));
 }
 
@@ -104,6 +113,8 @@ TEST_CASE("a surface file is not a hex mesh, and non-hex cells are rejected") {
     return "(no error)";
   };
   CHECK(message(dir / "m.obj").find("unknown hex mesh file format") != std::string::npos);
+  write_hex_mesh(dir / "m.exo", two_hexes());  // written, but not read back by Loom
+  CHECK(message(dir / "m.exo").find("does not read them") != std::string::npos);
   CHECK(message(dir / "missing.vtk").find("file not found") != std::string::npos);
 
   spit(dir / "tet.vtk",

@@ -85,7 +85,7 @@ std::string kinds_help() {
   std::string text = "Kinds:\n";
   for (const auto& k : loom::gen::generator_kinds())
     text += fmt::format("  {:<16} {}{}\n", loom::gen::usage(k), k.summary, k.hex_mesh ? " [hex mesh]" : "");
-  return text + "Surfaces: .obj .off .vtk .vtu .msh; hex meshes: .vtk .vtu .msh";
+  return text + "Surfaces: .obj .off .vtk .vtu .msh; hex meshes: .vtk .vtu .msh .exo .e";
 }
 
 loom::cli::Register reg{

@@ -15,6 +15,7 @@
 
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_parser.hpp"
+#include "src/check/validity.hpp"
 #include "src/cli/command.hpp"
 #include "src/cli/run_budget.hpp"
 #include "src/fill/cap.hpp"
@@ -143,6 +144,17 @@ nlohmann::json report_json(const Options& o, const loom::pipeline::MeshingResult
   return j;
 }
 
+/// The cell fields every written mesh carries: where each hex came from (0 woven,
+/// 1 searched, 2 database, 3 filled, 4 pillow) and its scaled Jacobian (the
+/// minimum over its corners, as criterion 7 measures it).
+std::vector<loom::CellField> cell_fields(const loom::HexMesh& mesh, const std::vector<loom::closure::HexSource>& sources) {
+  loom::CellField source{"source", {}, loom::CellField::Kind::integer};
+  for (auto s : sources) source.values.push_back(static_cast<double>(s));
+  loom::CellField quality{"scaled_jacobian", {}, loom::CellField::Kind::real};
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) quality.values.push_back(loom::scaled_jacobian(mesh, h));
+  return {source, quality};
+}
+
 /// --partial: the hexes woven so far as OUTPUT-stem.partial.EXT, and the STC
 /// with its sheet diagrams in the directory OUTPUT-stem.partial/.
 void write_partial(const std::filesystem::path& output, const loom::stc::Stc& stc, loom::stc::PictureFailures& failures,
@@ -260,10 +272,7 @@ int run(const Options& o) {
     std::cerr << "loom: weave closed but the result is not a valid hex mesh: " << why << after << "; nothing written\n";
     return 1;
   }
-  // Where each hex came from, as a cell field (0 woven, 1 searched, 2 database, 3 filled, 4 pillow).
-  loom::CellField source{"source", {}};
-  for (auto s : result.source) source.values.push_back(static_cast<std::int32_t>(s));
-  loom::write_hex_mesh(o.output, *result.mesh, {source});
+  loom::write_hex_mesh(o.output, *result.mesh, cell_fields(*result.mesh, result.source));
   const auto& q = result.check->quality;
   const std::size_t hexes = result.mesh->hexes.size();
   auto count = [&](loom::closure::HexSource s) { return std::count(result.source.begin(), result.source.end(), s); };
@@ -311,7 +320,7 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
   auto o = std::make_shared<Options>();
   app.description("Weave a hex mesh whose boundary is exactly the given closed quad surface");
   app.add_option("SURFACE", o->surface, "closed all-quad surface (.obj .off .vtk .vtu .msh)")->required()->check(CLI::ExistingFile);
-  app.add_option("-o,--output", o->output, "hex mesh to write (.vtk .vtu .msh)")->required();
+  app.add_option("-o,--output", o->output, "hex mesh to write (.vtk .vtu .msh .exo .e)")->required();
   app.add_option("--rules", o->rules, "directory of *.rule files (default: the shipped rules/)");
   app.add_option("--strategy", o->strategy, "a strategy file (default: the rules' strategies/default.strategy, else priority), priority, random or sequence:RULE,RULE...");
   app.add_option("--check-rules", o->check_rules,

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "src/mesh/hex_mesh.hpp"
 #include "src/mesh/quad_surface.hpp"
 
@@ -15,10 +17,14 @@ namespace loom {
 enum class CellShape { quad, hexahedron };
 
 /// A value per cell, written where the format carries cell data (VTK
-/// CELL_DATA, VTU CellData, MSH $ElementData).
+/// CELL_DATA, VTU CellData, MSH $ElementData, Exodus element variables).
+/// Integer fields (codes such as `source`) are written as integers where the
+/// format has them; their values must be whole numbers that fit in 32 bits.
 struct CellField {
-  std::string name;  ///< one word
-  std::vector<std::int32_t> values;
+  enum class Kind { integer, real };
+  std::string name;  ///< one word, at most 32 characters (Exodus's limit)
+  std::vector<double> values;
+  Kind kind = Kind::integer;
 };
 
 struct CellTable {
@@ -33,6 +39,10 @@ struct CellTable {
   int vtk_type() const { return shape == CellShape::quad ? 9 : 12; }  // VTK_QUAD, VTK_HEXAHEDRON
   int msh_type() const { return shape == CellShape::quad ? 3 : 5; }   // MSH 4-node quad, 8-node hex
 };
+
+/// Appends value `cell` of `field` to `out`: an integer field's as an integer,
+/// a real field's in the shortest text that reads back to the same double.
+void append_cell_value(fmt::memory_buffer& out, const CellField& field, std::size_t cell);
 
 CellTable cell_table(const QuadSurface& surface);
 CellTable cell_table(const HexMesh& mesh);

@@ -37,4 +37,9 @@ RawMesh read_msh_with_gmsh(const std::filesystem::path& file);
 /// MSH 4.1 ASCII.
 std::string msh_text(const CellTable& table);
 
+/// Exodus II through the SEACAS Exodus library (binary netCDF): writes the hex
+/// table to `file` itself, naming `shown_file` in errors (InputError, one line).
+/// See exodus_format.cpp for what the file holds.
+void write_exodus(const std::filesystem::path& file, const CellTable& table, const std::string& shown_file);
+
 }  // namespace loom

@@ -20,6 +20,7 @@ std::optional<MeshFormat> format_from_extension(const std::filesystem::path& fil
   if (ext == ".vtk") return MeshFormat::vtk;
   if (ext == ".vtu") return MeshFormat::vtu;
   if (ext == ".msh") return MeshFormat::msh;
+  if (ext == ".exo" || ext == ".e") return MeshFormat::exodus;
   return std::nullopt;
 }
 
@@ -32,7 +33,7 @@ std::string shown_extension(const std::filesystem::path& file) {
 
 MeshFormat surface_format_of(const std::filesystem::path& file) {
   auto format = format_from_extension(file);
-  if (!format)
+  if (!format || *format == MeshFormat::exodus)
     fail_input(file.string(), fmt::format("unknown surface file format ({})", shown_extension(file)),
                "use .obj, .off, .vtk, .vtu or .msh");
   return *format;
@@ -42,7 +43,7 @@ MeshFormat hex_format_of(const std::filesystem::path& file) {
   auto format = format_from_extension(file);
   if (!format || *format == MeshFormat::obj || *format == MeshFormat::off)
     fail_input(file.string(), fmt::format("unknown hex mesh file format ({})", shown_extension(file)),
-               "use .vtk, .vtu or .msh");
+               "use .vtk, .vtu, .msh, or .exo or .e (Exodus II)");
   return *format;
 }
 
@@ -58,6 +59,8 @@ std::string_view format_name(MeshFormat format) {
       return "VTU";
     case MeshFormat::msh:
       return "MSH";
+    case MeshFormat::exodus:
+      return "Exodus II";
   }
   return "?";
 }

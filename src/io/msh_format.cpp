@@ -91,7 +91,11 @@ std::string msh_text(const CellTable& table) {
   // One $ElementData view per field: name, time 0, time step 0, 1 component.
   for (const CellField& f : table.fields) {
     fmt::format_to(put, "$ElementData\n1\n\"{}\"\n1\n0\n3\n0\n1\n{}\n", f.name, cells);
-    for (std::size_t c = 0; c < cells; ++c) fmt::format_to(put, "{} {}\n", c + 1, f.values[c]);
+    for (std::size_t c = 0; c < cells; ++c) {
+      fmt::format_to(put, "{} ", c + 1);
+      append_cell_value(out, f, c);
+      fmt::format_to(put, "\n");
+    }
     fmt::format_to(put, "$EndElementData\n");
   }
   return fmt::to_string(out);

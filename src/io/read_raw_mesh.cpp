@@ -1,5 +1,6 @@
 #include "src/io/formats.hpp"
 #include "src/io/text_scanner.hpp"
+#include "src/util/error.hpp"
 
 namespace loom {
 
@@ -11,6 +12,9 @@ RawMesh read_raw_mesh(const std::filesystem::path& file, MeshFormat format) {
     case MeshFormat::vtk: return parse_legacy_vtk(read_input_file(file), where);
     case MeshFormat::vtu: return parse_vtu(read_input_file(file), where);
     case MeshFormat::msh: return read_msh(file);
+    case MeshFormat::exodus:
+      fail_input(where, "Loom writes Exodus II files but does not read them",
+                 "give the mesh as .vtk, .vtu or .msh (e.g. convert it with ParaView or Gmsh)");
   }
   return {};
 }

@@ -28,6 +28,8 @@ void write_surface(const std::filesystem::path& file, const QuadSurface& surface
     case MeshFormat::msh:
       text = msh_text(cell_table(surface));
       break;
+    case MeshFormat::exodus:  // surface_format_of refuses it
+      break;
   }
   write_text_atomically(file, text);
 }

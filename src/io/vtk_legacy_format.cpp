@@ -209,8 +209,12 @@ std::string legacy_vtk_text(const CellTable& table) {
   for (std::size_t c = 0; c < table.cell_count(); ++c) fmt::format_to(put, "{}\n", table.vtk_type());
   if (!table.fields.empty()) fmt::format_to(put, "CELL_DATA {}\n", table.cell_count());
   for (const CellField& f : table.fields) {
-    fmt::format_to(put, "SCALARS {} int 1\nLOOKUP_TABLE default\n", f.name);
-    for (std::int32_t v : f.values) fmt::format_to(put, "{}\n", v);
+    fmt::format_to(put, "SCALARS {} {} 1\nLOOKUP_TABLE default\n", f.name,
+                   f.kind == CellField::Kind::integer ? "int" : "double");
+    for (std::size_t c = 0; c < f.values.size(); ++c) {
+      append_cell_value(out, f, c);
+      fmt::format_to(put, "\n");
+    }
   }
   return fmt::to_string(out);
 }

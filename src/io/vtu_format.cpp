@@ -177,8 +177,13 @@ std::string vtu_text(const CellTable& table) {
   if (!table.fields.empty()) {
     fmt::format_to(put, "      <CellData Scalars=\"{}\">\n", table.fields.front().name);
     for (const CellField& f : table.fields) {
-      fmt::format_to(put, "        <DataArray type=\"Int32\" Name=\"{}\" format=\"ascii\">\n", f.name);
-      for (std::int32_t v : f.values) fmt::format_to(put, "          {}\n", v);
+      fmt::format_to(put, "        <DataArray type=\"{}\" Name=\"{}\" format=\"ascii\">\n",
+                     f.kind == CellField::Kind::integer ? "Int32" : "Float64", f.name);
+      for (std::size_t c = 0; c < f.values.size(); ++c) {
+        fmt::format_to(put, "          ");
+        append_cell_value(out, f, c);
+        fmt::format_to(put, "\n");
+      }
       fmt::format_to(put, "        </DataArray>\n");
     }
     fmt::format_to(put, "      </CellData>\n");
