@@ -293,11 +293,16 @@ int run(const Options& o) {
                              hexes, result.attempts, result.attempts == 1 ? "" : "s", quality);
   else if (result.made_by == "closed")
     std::cout << fmt::format("closed: {} hexes = {} woven (of the weave that left the fewest whiskers; {} peeled) + {} "
-                             "searched + {} from the database + {} filled + {} pillow, in {} cavit{} of {} quads{}; {}\n",
+                             "searched + {} from the database + {} filled + {} pillow, in {} cavit{} of {} quads{}{}; {}\n",
                              hexes, count(HexSource::woven), result.closure.peeled, count(HexSource::searched),
                              count(HexSource::database), count(HexSource::filled), count(HexSource::pillow),
                              result.closure.cavities, result.closure.cavities == 1 ? "y" : "ies",
-                             result.closure.front_quads, layer, quality);
+                             result.closure.front_quads,
+                             result.closure.pull_backs ? fmt::format(" after {} pull-back{} round stuck fronts",
+                                                                     result.closure.pull_backs,
+                                                                     result.closure.pull_backs == 1 ? "" : "s")
+                                                       : "",
+                             layer, quality);
   else if (result.made_by == "searched")
     std::cout << fmt::format("searched: {} hexes = {} searched + {} from the database + {} filled + {} pillow, from the "
                              "surface itself, fewer than the weave and its cavities gave{}{}; {}\n",

@@ -198,7 +198,6 @@ ClosedMesh close_round(const QuadSurface& surface, const HexMesh& start, const s
 }
 
 void add_up(ClosureReport& total, const ClosureReport& round) {
-  total.peeled += round.peeled;
   total.search.expanded += round.search.expanded;
   total.search.generated += round.search.generated;
   total.search.seconds += round.search.seconds;
@@ -272,6 +271,7 @@ ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, cons
     if (s == HexSource::searched) ++report.searched;
     if (s == HexSource::database) ++report.database;
   }
+  report.peeled = woven.hexes.size() - report.woven;
   out.on_boundary.assign(out.mesh.points.size(), false);
   for (std::size_t p = 0; p < surface.points.size(); ++p) out.on_boundary[p] = true;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
