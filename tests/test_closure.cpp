@@ -245,3 +245,23 @@ TEST_CASE("loom weave's pipeline searches a small surface fully when the weave's
   CHECK(r.check->quality.below_zero == 0);
   CHECK(r.smoothing.global_rounds > 0);
 }
+
+TEST_CASE("a closed weave with two cycles of hexes round one edge is cut back to what a mesh can hold, not filled") {
+  // randquad 38 seed 4: every weave attempt closes, the last into 229 hexes of
+  // which every pair meets properly but two cycles go round one edge (criterion
+  // 4). Cavity closure kept them all, the mesh failed the check, and the
+  // whole-surface fill made 6,080 hexes. Now the newest hex there is peeled.
+  const QuadSurface surface = gen::randquad(38, 4);
+  pipeline::MeshingOptions options;
+  options.attempts = 16;
+  options.closure = pipeline::Closure::search;
+  options.database = database_file(weave::default_rules_dir());
+  const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  const pipeline::MeshingResult r = pipeline::mesh_surface(surface, rules, options);
+  REQUIRE(r.weave.closed);
+  REQUIRE(r.combinatorially_valid());
+  CHECK(r.made_by == "closed");
+  CHECK(r.closure.peeled > 0);
+  CHECK(r.closure.woven > 200);
+  CHECK(std::count(r.source.begin(), r.source.end(), HexSource::filled) == 0);
+}

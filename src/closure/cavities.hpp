@@ -6,7 +6,8 @@
 // together (a surface quad no hex covers, a hex face no other hex or surface
 // quad matches). The woven hexes are taken as they are only if they could be
 // part of a valid mesh of the surface: every hex with eight distinct corners,
-// every pair meeting properly (hex_meeting.hpp), every face used at most
+// every pair meeting properly (hex_meeting.hpp), the hexes round every edge
+// one piece (joined across faces), every face used at most
 // twice and the right way round, and the front proper (quad_map.hpp) with
 // every piece of it a sphere. Where that fails, the woven hexes at the
 // offending vertices are peeled off (the front moves outwards) and the test
