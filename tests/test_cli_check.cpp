@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "src/check/quality_histogram.hpp"
 #include "src/gen/generators.hpp"
 #include "src/io/hex_io.hpp"
 #include "src/io/surface_io.hpp"
@@ -164,4 +165,40 @@ TEST_CASE("gen: every kind writes a readable file, byte-identical on a second ru
   REQUIRE(run_cli("gen ogrid 3 2 -o " + (dir / "o.msh").string()).status == 0);
   REQUIRE(run_cli("gen cylinder 3 2 -o " + (dir / "c.off").string()).status == 0);
   CHECK(run_cli("check " + (dir / "o.msh").string() + " --boundary " + (dir / "c.off").string()).status == 0);
+}
+
+TEST_CASE("the scaled Jacobians as a histogram: in check --json, weave's report, and --plot as SVG") {
+  ScratchDir dir("histogram");
+  HexMesh grid = gen::hexgrid(2, 1, 1);
+  QualityHistogram perfect = quality_histogram(grid);
+  CHECK(perfect.total() == 2);
+  CHECK(perfect.counts.back() == 2);  // scaled Jacobian 1 goes in the last bin, closed at 1
+  // Swapping the two faces of one hex turns it inside out: -1, the first bin.
+  Hex& h = grid.hexes[1];
+  for (int i = 0; i < 4; ++i) std::swap(h[i], h[i + 4]);
+  QualityHistogram one_inverted = quality_histogram(grid);
+  CHECK(one_inverted.counts.front() == 1);
+  CHECK(one_inverted.counts.back() == 1);
+  const std::string svg = histogram_svg(one_inverted, "a & <b>");
+  CHECK(svg.rfind("<svg", 0) == 0);
+  CHECK(svg.find("a &amp; &lt;b&gt;") != std::string::npos);
+  std::size_t bars = 0;
+  for (auto at = svg.find("<rect x="); at != std::string::npos; at = svg.find("<rect x=", at + 1)) ++bars;
+  CHECK(bars == 20);
+
+  write_hex_mesh(dir / "bad.vtk", grid);
+  auto r = run_cli("check " + (dir / "bad.vtk").string() + " --json --plot " + (dir / "bad.svg").string());
+  CHECK(r.status == 1);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["scaled_jacobian_histogram"]["counts"][0] == 1);
+  CHECK(j["scaled_jacobian_histogram"]["counts"][19] == 1);
+  CHECK(slurp(dir / "bad.svg").rfind("<svg", 0) == 0);
+
+  REQUIRE(run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
+  r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "box.vtk").string() + " --report " +
+              (dir / "box.json").string() + " --plot " + (dir / "box.svg").string());
+  REQUIRE(r.status == 0);
+  const auto report = nlohmann::json::parse(slurp(dir / "box.json"));
+  CHECK(report["scaled_jacobian_histogram"]["counts"][19] == 8);
+  CHECK(slurp(dir / "box.svg").find("scaled Jacobian (8 hexes)") != std::string::npos);
 }

@@ -16,6 +16,7 @@
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_parser.hpp"
 #include "src/check/validity.hpp"
+#include "src/check/quality_histogram.hpp"
 #include "src/cli/command.hpp"
 #include "src/cli/run_budget.hpp"
 #include "src/fill/cap.hpp"
@@ -33,7 +34,7 @@
 namespace {
 
 struct Options {
-  std::string surface, output, rules, strategy, dot_dir, trace, report;
+  std::string surface, output, rules, strategy, dot_dir, trace, report, plot;
   std::vector<std::string> check_rules;
   std::uint64_t seed = 0;
   std::size_t attempts = 16;
@@ -133,6 +134,7 @@ nlohmann::json report_json(const Options& o, const loom::pipeline::MeshingResult
     j["mean_scaled_jacobian"] = r.check->quality.mean_scaled_jacobian;
     j["below_zero"] = r.check->quality.below_zero;
     j["below_0_2"] = r.check->quality.below_0_2;
+    j["scaled_jacobian_histogram"] = loom::histogram_json(loom::quality_histogram(*r.mesh));
   }
   j["boundary_layer_hexes"] = r.boundary_layer.hexes_added;
   j["smoothing_iterations"] = r.smoothing.iterations;
@@ -273,6 +275,9 @@ int run(const Options& o) {
     return 1;
   }
   loom::write_hex_mesh(o.output, *result.mesh, cell_fields(*result.mesh, result.source));
+  if (!o.plot.empty())
+    loom::write_text_atomically(o.plot, loom::histogram_svg(loom::quality_histogram(*result.mesh),
+                                                            "loom weave " + o.surface + ": " + o.output));
   const auto& q = result.check->quality;
   const std::size_t hexes = result.mesh->hexes.size();
   auto count = [&](loom::closure::HexSource s) { return std::count(result.source.begin(), result.source.end(), s); };
@@ -342,6 +347,7 @@ loom::cli::Register reg{{"weave", [](CLI::App& app) {
   app.add_flag("--no-svg", o->no_svg, "with --dot or --partial: write DOT files only, no SVG");
   app.add_option("--trace", o->trace, "write one line per rule application to this file");
   app.add_option("--report", o->report, "write a JSON report to this file");
+  app.add_option("--plot", o->plot, "with the mesh, write a bar chart (SVG) of its scaled Jacobians to this file");
   app.add_flag("--partial", o->partial, "when the weave does not close, write the hexes woven so far and the STC (DOT/SVG) for inspection");
   const std::map<std::string, loom::pipeline::Closure> closures{{"none", loom::pipeline::Closure::none},
                                                                  {"search", loom::pipeline::Closure::search},
