@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 
@@ -132,6 +133,30 @@ private:
     return nodes;
   }
 
+  struct Setting {
+    const char* keyword;
+    std::size_t* value;
+    const char* what;
+    bool positive;  ///< 0 refused
+  };
+
+  /// `{ goal MEASURE  SETTING N ...  apply ... }`, the body of a backtrack or a search.
+  void goal_block(StrategyNode& n, int depth, const char* node, const char* branches, std::initializer_list<Setting> settings) {
+    expect("{");
+    for (bool more = true; more;) {
+      more = false;
+      if (accept("goal")) n.goal = name("a measure"), more = true;
+      for (const Setting& s : settings)
+        if (!more && accept(s.keyword)) *s.value = s.positive ? positive(s.what) : number(s.what), more = true;
+    }
+    if (n.goal.empty())
+      fail(peek(), fmt::format("{} needs 'goal MEASURE' first (the goal is that the measure reaches 0)", node));
+    if (peek().text != "apply")
+      fail(peek(), fmt::format("{} takes one 'apply' ({} are that apply's matches)", node, branches));
+    n.body.push_back(this->node(depth + 1));
+    expect("}");
+  }
+
   StrategyNode node(int depth) {
     StrategyNode n;
     n.pos = peek().pos;
@@ -155,32 +180,16 @@ private:
       if (accept("else")) n.otherwise = block(depth + 1);
     } else if (accept("backtrack")) {
       n.op = StrategyNode::Op::backtrack;
-      expect("{");
-      for (;;) {
-        if (accept("goal")) n.goal = name("a measure");
-        else if (accept("window")) n.window = number("a window");
-        else if (accept("branching")) n.branching = number("a branching");
-        else if (accept("max")) n.max_backtracks = number("a number of backtracks");
-        else break;
-      }
-      if (n.goal.empty()) fail(peek(), "backtrack needs 'goal MEASURE' first (the goal is that the measure reaches 0)");
-      if (peek().text != "apply") fail(peek(), "backtrack takes one 'apply' (its alternatives are that apply's matches)");
-      n.body.push_back(node(depth + 1));
-      expect("}");
+      goal_block(n, depth, "backtrack", "its alternatives",
+                 {{"window", &n.window, "a window", false},
+                  {"branching", &n.branching, "a branching", false},
+                  {"max", &n.max_backtracks, "a number of backtracks", false}});
     } else if (accept("search")) {
       n.op = StrategyNode::Op::search;
-      expect("{");
-      for (;;) {
-        if (accept("goal")) n.goal = name("a measure");
-        else if (accept("depth")) n.depth = positive("a depth");
-        else if (accept("branching")) n.branching = positive("a branching");
-        else if (accept("max")) n.max_tried = positive("a number of applications");
-        else break;
-      }
-      if (n.goal.empty()) fail(peek(), "search needs 'goal MEASURE' first (the goal is that the measure reaches 0)");
-      if (peek().text != "apply") fail(peek(), "search takes one 'apply' (its branches are that apply's matches)");
-      n.body.push_back(node(depth + 1));
-      expect("}");
+      goal_block(n, depth, "search", "its branches",
+                 {{"depth", &n.depth, "a depth", true},
+                  {"branching", &n.branching, "a branching", true},
+                  {"max", &n.max_tried, "a number of applications", true}});
     } else if (accept("when")) {
       n.op = StrategyNode::Op::when;
       n.goal = name("a measure");

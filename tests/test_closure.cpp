@@ -216,6 +216,17 @@ TEST_CASE("closure is deterministic: the same surface gives the same hexes, and 
   CHECK(check_hex_mesh(a.mesh, &surface).combinatorial_valid());
 }
 
+/// What `loom weave --closure search` does: the shipped rules, 16 attempts,
+/// cavity closure and the search, no fill.
+pipeline::MeshingResult mesh_without_fill(const QuadSurface& surface) {
+  pipeline::MeshingOptions options;
+  options.attempts = 16;
+  options.closure = pipeline::Closure::search;
+  options.database = database_file(weave::default_rules_dir());
+  const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  return pipeline::mesh_surface(surface, rules, options);
+}
+
 // Under ASan+UBSan (-DLOOM_SANITIZE=ON) this case alone took 279 s of ctest's
 // 300: its one input, quadrangulation 16 90, is the point of the case (the
 // full search of 50,000 expansions), so it cannot shrink and is skipped there.
@@ -231,12 +242,7 @@ TEST_CASE("loom weave's pipeline searches a small surface fully when the weave's
   // Quadrangulation 16 90: the weave gives a valid mesh of 117 hexes; a short
   // search from the surface finds 77, the full one 55 (before the boundary layer).
   const QuadSurface surface = gen::quadrangulation(16, 90);
-  pipeline::MeshingOptions options;
-  options.attempts = 16;
-  options.closure = pipeline::Closure::search;
-  options.database = database_file(weave::default_rules_dir());
-  const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
-  const pipeline::MeshingResult r = pipeline::mesh_surface(surface, rules, options);
+  const pipeline::MeshingResult r = mesh_without_fill(surface);
   REQUIRE(r.combinatorially_valid());
   CHECK(r.made_by == "searched");
   CHECK(r.mesh->hexes.size() - r.boundary_layer.hexes_added <= 72);
@@ -252,12 +258,7 @@ TEST_CASE("a closed weave with two cycles of hexes round one edge is cut back to
   // 4). Cavity closure kept them all, the mesh failed the check, and the
   // whole-surface fill made 6,080 hexes. Now the newest hex there is peeled.
   const QuadSurface surface = gen::randquad(38, 4);
-  pipeline::MeshingOptions options;
-  options.attempts = 16;
-  options.closure = pipeline::Closure::search;
-  options.database = database_file(weave::default_rules_dir());
-  const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
-  const pipeline::MeshingResult r = pipeline::mesh_surface(surface, rules, options);
+  const pipeline::MeshingResult r = mesh_without_fill(surface);
   REQUIRE(r.weave.closed);
   REQUIRE(r.combinatorially_valid());
   CHECK(r.made_by == "closed");
