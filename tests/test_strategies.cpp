@@ -2,6 +2,8 @@
 // real weave, and `loom weave --strategy FILE`.
 #include <doctest/doctest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -218,4 +220,23 @@ TEST_CASE("search: the fewest applications that reach the goal, the domain seein
   trace(second);
   CHECK(first.size() == plain);  // none shorter: the search one shorter failed
   CHECK(first == second);
+}
+
+TEST_CASE("a broken default strategy in the rule directory is bad input: exit 2 naming its line") {
+  // It is read as the options are made, before the command could catch it:
+  // it used to end as an internal error with status 1.
+  ScratchDir dir("broken-default");
+  std::filesystem::copy(weave::default_rules_dir(), dir / "rules", std::filesystem::copy_options::recursive);
+  {
+    std::ofstream broken(dir / "rules" / "strategies" / "default.strategy", std::ios::trunc);
+    broken << "phase p { frob }\n";
+  }
+  REQUIRE(run_cli("gen box 1 1 1 -o " + (dir / "box.obj").string()).status == 0);
+  ::setenv("LOOM_RULES", (dir / "rules").c_str(), 1);
+  const auto r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "b.vtk").string());
+  ::unsetenv("LOOM_RULES");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("default.strategy:1:11: expected 'apply'") != std::string::npos);
+  CHECK(r.err.find("internal error") == std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "b.vtk"));
 }

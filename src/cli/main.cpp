@@ -7,6 +7,7 @@
 #include <map>
 #include <new>
 
+#include "engine/rule_parser.hpp"
 #include "src/cli/command.hpp"
 #include "src/util/error.hpp"
 #include "src/util/one_line.hpp"
@@ -44,6 +45,12 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const loom::InputError& e) {
     std::cerr << "loom: error: " << loom::one_line(e.what()) << "\n";
+    return 2;
+  } catch (const loom::engine::RuleError& e) {
+    // A rule or strategy file read before a command could say which (the
+    // rule directory's default strategy, read with the options) is bad input too.
+    std::cerr << "loom: error: " << loom::one_line(e.what())
+              << "; fix the file (grammar: docs/rules.md, docs/strategies.md)\n";
     return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << "loom: out of memory: the run needs more than it may use (--max-memory, or the machine's); nothing "
