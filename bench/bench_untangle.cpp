@@ -1,0 +1,117 @@
+// bench_untangle: the global untangler (src/geometry/untangle.hpp) in figures.
+//
+//   bench_untangle [--sizes 10,20,30,46] [--scramble S] [--seed N] [--quads A-B]
+//
+// Speed: n x n x n hex grids whose interior nodes are thrown up to S cell
+// lengths away (the boundary fixed), untangled; seconds per 10^5 hexes,
+// inverted hexes before and after, rounds. Success: `loom weave`'s pipeline on
+// every 3-connected quadrangulation with A..B quads (cavity closure and search
+// included), and how many of its meshes come out with every scaled Jacobian
+// above 0 (criterion 7), with the untangler's rounds. Figures, not a test: the
+// machine is shared, compare within one run.
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "bench/bench_options.hpp"
+#include "engine/rule_compiler.hpp"
+#include "src/check/hex_boundary.hpp"
+#include "src/closure/database.hpp"
+#include "src/fill/cap.hpp"
+#include "src/gen/generators.hpp"
+#include "src/geometry/untangle.hpp"
+#include "src/pipeline/mesh_surface.hpp"
+#include "src/quadmap/enumerate.hpp"
+#include "src/weave/weave.hpp"
+
+namespace {
+
+using namespace loom;
+
+std::vector<int> parse_list(const std::string& s) {
+  std::vector<int> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(std::stoi(item));
+  return out;
+}
+
+void speed(const std::vector<int>& sizes, double scramble, std::uint64_t seed) {
+  std::printf("| grid | hexes | inverted before | inverted after | untangled | rounds | L-BFGS iterations | seconds | s per 10^5 hexes |\n"
+              "|---|---|---|---|---|---|---|---|---|\n");
+  for (int n : sizes) {
+    HexMesh mesh = gen::hexgrid(n, n, n);
+    std::vector<std::uint32_t> boundary;
+    hex_mesh_boundary(mesh, &boundary);
+    std::vector<bool> fixed(mesh.points.size(), false);
+    for (std::uint32_t v : boundary) fixed[v] = true;
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> shift(-scramble, scramble);
+    for (std::size_t i = 0; i < mesh.points.size(); ++i)
+      if (!fixed[i])
+        for (int d = 0; d < 3; ++d) mesh.points[i][d] += shift(rng);
+    const geometry::UntangleReport r = geometry::untangle(mesh, fixed);
+    std::printf("| %d^3 | %zu | %zu | %zu | %s | %d | %d | %.2f | %.2f |\n", n, mesh.hexes.size(), r.inverted_before,
+                r.inverted_after, r.untangled ? "yes" : "no", r.rounds, r.iterations, r.seconds,
+                r.seconds * 1e5 / static_cast<double>(mesh.hexes.size()));
+    std::fflush(stdout);
+  }
+}
+
+void success(int from, int to) {
+  const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  std::printf("\n| quads | inputs | valid 1-6 | every SJ > 0 | untangler ran | of those, every SJ > 0 | mean s |\n"
+              "|---|---|---|---|---|---|---|\n");
+  for (int f = from; f <= to; f += 2) {
+    std::size_t inputs = 0, valid = 0, positive = 0, ran = 0, ran_positive = 0;
+    double seconds = 0;
+    const auto maps = quadmap::three_connected_quadrangulations(f);
+    for (std::size_t i = 0; i < maps.size(); ++i) {
+      pipeline::MeshingOptions m;
+      m.attempts = 16;
+      m.closure = pipeline::Closure::full;
+      m.database = closure::database_file(weave::default_rules_dir());
+      m.fill_caps = fill::default_caps_dir();
+      const auto r = pipeline::mesh_surface(gen::quadrangulation(maps[i], static_cast<int>(i)), rules, m);
+      ++inputs;
+      seconds += r.seconds;
+      if (!r.combinatorially_valid()) continue;
+      ++valid;
+      const bool good = r.check->valid();
+      positive += good;
+      if (r.smoothing.global_rounds > 0) {
+        ++ran;
+        ran_positive += good;
+      }
+    }
+    std::printf("| %d | %zu | %zu | %zu | %zu | %zu | %.1f |\n", f, inputs, valid, positive, ran, ran_positive,
+                seconds / static_cast<double>(inputs));
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app("The global untangler in figures: speed on scrambled grids, success on loom weave's closures");
+  std::string sizes = "10,20,30,46", quads = "6-12";
+  double scramble = 1.5;
+  std::uint64_t seed = 1;
+  app.add_option("--sizes", sizes, "grid sizes n (n^3 hexes; default 10,20,30,46: up to about 10^5)");
+  app.add_option("--scramble", scramble, "interior nodes moved up to this many cell lengths (default 1.5: nearly every hex inverted)");
+  app.add_option("--seed", seed, "of the scrambling (default 1)");
+  app.add_option("--quads", quads, "3-connected quadrangulations with A-B quads for the success rate ('' for none; default 6-12)");
+  loom::bench::parse_or_exit(app, argc, argv);
+  speed(parse_list(sizes), scramble, seed);
+  if (quads.empty()) return 0;
+  const auto dash = quads.find('-');
+  const int from = std::stoi(quads.substr(0, dash));
+  const int to = dash == std::string::npos ? from : std::stoi(quads.substr(dash + 1));
+  success(from, to);
+  return 0;
+}
