@@ -252,7 +252,11 @@ TEST_CASE("loom weave's pipeline searches a small surface fully when the weave's
   CHECK(r.smoothing.global_rounds > 0);
 }
 
-TEST_CASE("a closed weave with two cycles of hexes round one edge is cut back to what a mesh can hold, not filled") {
+// Sixteen weave attempts on one input are the point of this case too: 8 s
+// plain, 110 s under the sanitizers, where it is skipped (cavities_left runs
+// sanitized in the cases above).
+TEST_CASE("a closed weave with two cycles of hexes round one edge is cut back to what a mesh can hold, not filled" *
+          doctest::skip(kSkipFullSearch)) {
   // randquad 38 seed 4: every weave attempt closes, the last into 229 hexes of
   // which every pair meets properly but two cycles go round one edge (criterion
   // 4). Cavity closure kept them all, the mesh failed the check, and the
