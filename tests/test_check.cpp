@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "src/check/hex_boundary.hpp"
+#include "src/check/hex_sheets.hpp"
 #include "src/check/hex_topology.hpp"
 #include "src/check/validity.hpp"
 #include "src/check/verdict.hpp"
@@ -311,4 +313,29 @@ TEST_CASE("JSON report carries the verdict and every criterion") {
   CHECK(j["criteria"][1]["detail"] == "hexes 0 and 8 are the same hex (same 8 nodes)");
   CHECK(j["min_scaled_jacobian"] == 1.0);
   CHECK(j["verdict"].get<std::string>().rfind("invalid: criterion 2", 0) == 0);
+}
+
+TEST_CASE("the sheets of a hex mesh from its connectivity: a grid has one per layer of each direction") {
+  const HexMesh grid = gen::hexgrid(3, 2, 4);
+  const HexSheets sheets = hex_sheets(grid);
+  CHECK(sheets.count == 3 + 2 + 4);
+  REQUIRE(sheets.of_hex.size() == grid.hexes.size());
+  // The hexes of one sheet are a layer: they share the sheet's coordinate.
+  std::map<std::uint32_t, std::set<long>> layer;  // sheet -> the rounded coordinate of its hexes' centres
+  for (std::size_t h = 0; h < grid.hexes.size(); ++h)
+    for (int d = 0; d < 3; ++d) {
+      // Direction d crosses the edge 0-1, 0-3 or 0-4 of the hex: the coordinate that edge changes.
+      const int corner = std::array<int, 3>{1, 3, 4}[d];
+      const Vec3& a = grid.points[grid.hexes[h][0]];
+      const Vec3& b = grid.points[grid.hexes[h][corner]];
+      int axis = 0;
+      for (int k = 1; k < 3; ++k)
+        if (std::abs(b[k] - a[k]) > std::abs(b[axis] - a[axis])) axis = k;
+      layer[sheets.of_hex[h][d]].insert(std::lround(2 * (a[axis] + b[axis])));
+    }
+  for (const auto& [sheet, coordinates] : layer) CHECK(coordinates.size() == 1);
+  // Three sheets per hex, all different.
+  for (const auto& three : sheets.of_hex) CHECK(std::set<std::uint32_t>(three.begin(), three.end()).size() == 3);
+  // A single hex lies on three sheets.
+  CHECK(hex_sheets(gen::hexgrid(1, 1, 1)).count == 3);
 }

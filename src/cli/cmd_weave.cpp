@@ -16,6 +16,7 @@
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_parser.hpp"
 #include "src/check/validity.hpp"
+#include "src/check/hex_sheets.hpp"
 #include "src/check/quality_histogram.hpp"
 #include "src/cli/command.hpp"
 #include "src/cli/run_budget.hpp"
@@ -147,14 +148,22 @@ nlohmann::json report_json(const Options& o, const loom::pipeline::MeshingResult
 }
 
 /// The cell fields every written mesh carries: where each hex came from (0 woven,
-/// 1 searched, 2 database, 3 filled, 4 pillow) and its scaled Jacobian (the
-/// minimum over its corners, as criterion 7 measures it).
+/// 1 searched, 2 database, 3 filled, 4 pillow), its scaled Jacobian (the
+/// minimum over its corners, as criterion 7 measures it), and the three sheets
+/// it lies on (those its edges 0-1, 0-3 and 0-4 cross; check/hex_sheets.hpp).
 std::vector<loom::CellField> cell_fields(const loom::HexMesh& mesh, const std::vector<loom::closure::HexSource>& sources) {
   loom::CellField source{"source", {}, loom::CellField::Kind::integer};
   for (auto s : sources) source.values.push_back(static_cast<double>(s));
   loom::CellField quality{"scaled_jacobian", {}, loom::CellField::Kind::real};
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) quality.values.push_back(loom::scaled_jacobian(mesh, h));
-  return {source, quality};
+  std::vector<loom::CellField> fields{source, quality};
+  const loom::HexSheets sheets = loom::hex_sheets(mesh);
+  for (int d = 0; d < 3; ++d) {
+    loom::CellField sheet{fmt::format("sheet_{}", "ijk"[d]), {}, loom::CellField::Kind::integer};
+    for (const auto& three : sheets.of_hex) sheet.values.push_back(three[d]);
+    fields.push_back(std::move(sheet));
+  }
+  return fields;
 }
 
 /// --partial: the hexes woven so far as OUTPUT-stem.partial.EXT, and the STC
