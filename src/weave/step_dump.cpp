@@ -1,5 +1,7 @@
 #include "src/weave/step_dump.hpp"
 
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -21,12 +23,16 @@ StepDumper::StepDumper(std::filesystem::path dir, bool svg) : dir_(std::move(dir
 void StepDumper::emit(const std::string& stem, const std::string& dot) {
   write_text_atomically(dir_ / (stem + ".dot"), dot);
   written_.push_back(dir_ / (stem + ".dot"));
-  if (svg_) to_draw_.emplace_back(dir_ / (stem + ".svg"), dot);
+  if (svg_) to_draw_.push_back(dir_ / stem);
 }
 
 std::size_t StepDumper::render() {
   const std::size_t drawn = to_draw_.size();
-  for (auto& [svg, dot] : to_draw_) {
+  // Read back from the DOT files: a long weave's texts would not all fit in memory.
+  for (const auto& stem : to_draw_) {
+    std::ifstream in(stem.string() + ".dot", std::ios::binary);
+    const std::string dot((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::filesystem::path svg = stem.string() + ".svg";
     stc::write_svg(svg, dot, failures_);
     written_.push_back(svg);
   }

@@ -8,7 +8,6 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "engine/engine.hpp"
@@ -38,7 +37,7 @@ private:
   std::filesystem::path dir_;
   bool svg_;
   std::vector<std::filesystem::path> written_;
-  std::vector<std::pair<std::filesystem::path, std::string>> to_draw_;  ///< SVG file, its DOT text
+  std::vector<std::filesystem::path> to_draw_;  ///< stems whose .dot is written and .svg not yet
   stc::PictureFailures failures_;
 };
 
