@@ -15,9 +15,9 @@
 
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_parser.hpp"
-#include "src/check/validity.hpp"
 #include "src/check/hex_sheets.hpp"
 #include "src/check/quality_histogram.hpp"
+#include "src/check/validity.hpp"
 #include "src/cli/command.hpp"
 #include "src/cli/run_budget.hpp"
 #include "src/fill/cap.hpp"
