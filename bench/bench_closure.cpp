@@ -103,24 +103,6 @@ QuadSurface renumbered(const QuadSurface& s, std::uint64_t seed) {
   return out;
 }
 
-std::vector<int> parse_counts(const std::string& s) {
-  std::vector<int> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');) {
-    if (item.empty()) continue;
-    const auto dash = item.find('-');
-    if (dash == std::string::npos) {
-      out.push_back(std::stoi(item));
-      continue;
-    }
-    const auto colon = item.find(':');
-    const int from = std::stoi(item.substr(0, dash)), to = std::stoi(item.substr(dash + 1, colon - dash - 1));
-    const int step = colon == std::string::npos ? 2 : std::stoi(item.substr(colon + 1));
-    for (int f = from; f <= to; f += step) out.push_back(f);
-  }
-  return out;
-}
-
 struct Summary {
   std::size_t n = 0, closed = 0, comb_valid = 0, valid = 0, most = 0, total = 0, expanded = 0, states = 0;
   std::map<std::string, std::size_t> made_by;
@@ -231,7 +213,7 @@ int main(int argc, char** argv) {
   }
 
   std::vector<std::function<Input()>> inputs;
-  for (int f : parse_counts(quads)) {
+  for (int f : loom::bench::parse_counts(quads)) {
     const auto maps = std::make_shared<const std::vector<quadmap::QuadMap>>(quadmap::three_connected_quadrangulations(f));
     for (std::size_t i = 0; i < maps->size(); ++i)
       inputs.push_back([f, i, maps] {
@@ -247,7 +229,7 @@ int main(int argc, char** argv) {
           return Input{r == 0 ? name : fmt::format("{} renumbered {}", name, r), name,
                        r == 0 ? make() : renumbered(make(), static_cast<std::uint64_t>(r))};
         });
-  for (int f : parse_counts(randquads))
+  for (int f : loom::bench::parse_counts(randquads))
     for (int seed = 1; seed <= seeds; ++seed)
       inputs.push_back([f, seed] {
         return Input{fmt::format("randquad {} s{}", f, seed), fmt::format("randquad {}", f),

@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cstdio>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,14 +31,6 @@
 namespace {
 
 using namespace loom;
-
-std::vector<int> parse_list(const std::string& s) {
-  std::vector<int> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(std::stoi(item));
-  return out;
-}
 
 void speed(const std::vector<int>& sizes, double scramble, std::uint64_t seed) {
   std::printf("| grid | hexes | inverted before | inverted after | untangled | rounds | L-BFGS iterations | seconds | s per 10^5 hexes |\n"
@@ -63,11 +54,12 @@ void speed(const std::vector<int>& sizes, double scramble, std::uint64_t seed) {
   }
 }
 
-void success(int from, int to) {
+void success(const std::vector<int>& counts) {
+  if (counts.empty()) return;
   const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
   std::printf("\n| quads | inputs | valid 1-6 | every SJ > 0 | untangler ran | of those, every SJ > 0 | mean s |\n"
               "|---|---|---|---|---|---|---|\n");
-  for (int f = from; f <= to; f += 2) {
+  for (int f : counts) {
     std::size_t inputs = 0, valid = 0, positive = 0, ran = 0, ran_positive = 0;
     double seconds = 0;
     const auto maps = quadmap::three_connected_quadrangulations(f);
@@ -107,11 +99,7 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "of the scrambling (default 1)");
   app.add_option("--quads", quads, "3-connected quadrangulations with A-B quads for the success rate ('' for none; default 6-12)");
   loom::bench::parse_or_exit(app, argc, argv);
-  speed(parse_list(sizes), scramble, seed);
-  if (quads.empty()) return 0;
-  const auto dash = quads.find('-');
-  const int from = std::stoi(quads.substr(0, dash));
-  const int to = dash == std::string::npos ? from : std::stoi(quads.substr(dash + 1));
-  success(from, to);
+  speed(loom::bench::parse_counts(sizes), scramble, seed);
+  success(loom::bench::parse_counts(quads));
   return 0;
 }

@@ -16,6 +16,7 @@ namespace loom::engine {
 namespace {
 
 constexpr int kMaxDepth = 100;
+constexpr std::size_t kMaxSearchDepth = 1000;
 
 struct Word {
   std::string text;
@@ -190,6 +191,9 @@ private:
                  {{"depth", &n.depth, "a depth", true},
                   {"branching", &n.branching, "a branching", true},
                   {"max", &n.max_tried, "a number of applications", true}});
+      // A level is a frame of the search's recursion.
+      if (n.depth > kMaxSearchDepth)
+        throw RuleError(file_, n.pos, fmt::format("a search deeper than {} levels; lower its depth", kMaxSearchDepth));
     } else if (accept("when")) {
       n.op = StrategyNode::Op::when;
       n.goal = name("a measure");

@@ -176,6 +176,8 @@ TEST_CASE("search: the fewest applications that reach the goal, the domain seein
         "s.strategy:1:20: search needs 'goal MEASURE' first (the goal is that the measure reaches 0), found 'apply'");
   CHECK(parse_error("phase p { search { goal front depth 0 apply all } }") ==
         "s.strategy:1:37: expected a depth of at least 1 (with 0 a search tries nothing), found '0'");
+  CHECK(parse_error("phase p { search { goal front depth 999999999999 apply all } }") ==
+        "s.strategy:1:11: a search deeper than 1000 levels; lower its depth");
   CHECK(parse_error("phase p { search { goal front repeat { apply all } } }") ==
         "s.strategy:1:31: search takes one 'apply' (its branches are that apply's matches), found 'repeat'");
   const auto defaults = engine::Strategy::parse_text("phase p { search { goal front apply all } }", "d.strategy");

@@ -6,6 +6,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "src/check/hex_topology.hpp"
 #include "src/closure/hex_meeting.hpp"
 #include "src/quadmap/hex_glue.hpp"
 
@@ -96,12 +97,10 @@ Round examine(const QuadSurface& surface, const std::vector<Hex>& hexes, const s
   // the cavity gets; a cycle beside another piece cannot, though every pair
   // meets properly (randquad 38 s4's closed weave had two cycles round an
   // edge and failed criterion 4).
-  static constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                                        {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
   std::map<std::uint64_t, std::vector<std::int32_t>> round_edge;
   for (std::size_t h = 0; h < hexes.size(); ++h)
     if (alive[h])
-      for (const auto& e : kEdges) {
+      for (const auto& e : kHexEdgeCorners) {
         const std::uint32_t a = hexes[h][e[0]], b = hexes[h][e[1]];
         round_edge[key(std::min(a, b), std::max(a, b))].push_back(static_cast<std::int32_t>(h));
       }
