@@ -1,0 +1,88 @@
+#include "src/cli/weave_report.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "src/check/hex_sheets.hpp"
+#include "src/check/quality_histogram.hpp"
+#include "src/check/validity.hpp"
+
+namespace loom::cli {
+
+nlohmann::json report_json(const std::string& input, const pipeline::MeshingResult& r) {
+  const engine::Strategy& strategy = r.strategy;
+  nlohmann::json j;
+  j["input"] = input;
+  j["strategy"] = strategy.name();
+  j["seed"] = strategy.seed;
+  j["attempts"] = r.attempts;
+  j["backtracks"] = r.weave.backtracks;
+  j["phases"] = nlohmann::json::array();
+  for (const auto& p : r.weave.phases)
+    j["phases"].push_back({{"name", p.name},
+                           {"steps", p.steps},
+                           {"backtracks", p.backtracks},
+                           {"searched", p.searched},
+                           {"seconds", p.seconds}});
+  j["closed"] = r.weave.closed;
+  j["steps"] = r.weave.steps;
+  j["rule_applications"] = r.weave.applications;
+  j["whiskers_left"] = r.weave.whiskers_left;
+  j["filled"] = r.filled();
+  j["made_by"] = r.made_by.empty() ? "nothing" : r.made_by;
+  j["woven_hexes"] = r.stc.hexes();
+  j["hexes"] = r.mesh ? r.mesh->hexes.size() : 0;
+  j["mesh_hexes"] = j["hexes"];
+  nlohmann::json sources = nlohmann::json::object();
+  for (auto s : {closure::HexSource::woven, closure::HexSource::searched, closure::HexSource::database,
+                 closure::HexSource::filled, closure::HexSource::pillow})
+    sources[closure::source_name(s)] = std::count(r.source.begin(), r.source.end(), s);
+  j["hex_sources"] = sources;
+  if (r.made_by == "closed" || r.made_by == "searched" || !r.closure_failure.empty()) {
+    const auto& c = r.closure;
+    j["closure"] = {{"woven_kept", c.woven}, {"woven_peeled", c.peeled}, {"cavities", c.cavities},
+                    {"front_quads", c.front_quads}, {"searched", c.searched}, {"database", c.database},
+                    {"filled", c.filled}, {"pillowed", c.pillowed}, {"filled_cavities", c.filled_cavities},
+                    {"fill_quads", c.fill_quads}, {"pull_backs", c.pull_backs}, {"search_expanded", c.search.expanded},
+                    {"search_states", c.search.generated}, {"search_seconds", c.search.seconds},
+                    {"seconds", c.seconds}};
+    if (!r.closure_failure.empty()) j["closure_failure"] = r.closure_failure;
+  }
+  j["sheets"] = r.stc.sheets();
+  j["chords"] = r.stc.chords();
+  j["valid"] = r.check && r.check->valid();
+  j["combinatorially_valid"] = r.combinatorially_valid();
+  if (r.check) {
+    j["min_scaled_jacobian"] = r.check->quality.min_scaled_jacobian;
+    j["mean_scaled_jacobian"] = r.check->quality.mean_scaled_jacobian;
+    j["below_zero"] = r.check->quality.below_zero;
+    j["below_0_2"] = r.check->quality.below_0_2;
+    j["scaled_jacobian_histogram"] = histogram_json(quality_histogram(*r.mesh));
+  }
+  j["boundary_layer_hexes"] = r.boundary_layer.hexes_added;
+  j["smoothing_iterations"] = r.smoothing.iterations;
+  j["match_attempts"] = r.weave.counters.match_attempts;
+  j["seconds"] = r.seconds;
+  if (!r.weave.closed) j["left"] = r.weave.left;
+  if (!r.failure.empty()) j["failure"] = r.failure;
+  if (!r.fill_failure.empty()) j["fill_failure"] = r.fill_failure;
+  return j;
+}
+
+std::vector<CellField> cell_fields(const HexMesh& mesh, const std::vector<closure::HexSource>& sources) {
+  CellField source{"source", {}, CellField::Kind::integer};
+  for (auto s : sources) source.values.push_back(static_cast<double>(s));
+  CellField quality{"scaled_jacobian", {}, CellField::Kind::real};
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) quality.values.push_back(scaled_jacobian(mesh, h));
+  std::vector<CellField> fields{source, quality};
+  const HexSheets sheets = hex_sheets(mesh);
+  for (int d = 0; d < 3; ++d) {
+    CellField sheet{fmt::format("sheet_{}", "ijk"[d]), {}, CellField::Kind::integer};
+    for (const auto& three : sheets.of_hex) sheet.values.push_back(three[d]);
+    fields.push_back(std::move(sheet));
+  }
+  return fields;
+}
+
+}  // namespace loom::cli

@@ -1,0 +1,24 @@
+#pragma once
+// What `loom weave` and `loom mesh` say of a run beside the mesh: the JSON
+// report (--report, keys in docs/cli.md) and the cell fields every written mesh
+// carries.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "src/io/cell_table.hpp"
+#include "src/pipeline/mesh_surface.hpp"
+
+namespace loom::cli {
+
+/// The report of a run on `input` (the path the user gave).
+nlohmann::json report_json(const std::string& input, const pipeline::MeshingResult& r);
+
+/// Where each hex came from (0 woven, 1 searched, 2 database, 3 filled,
+/// 4 pillow), its scaled Jacobian (the minimum over its corners, as criterion 7
+/// measures it), and the three sheets it lies on (those its edges 0-1, 0-3 and
+/// 0-4 cross; check/hex_sheets.hpp).
+std::vector<CellField> cell_fields(const HexMesh& mesh, const std::vector<closure::HexSource>& sources);
+
+}  // namespace loom::cli
