@@ -24,6 +24,7 @@
 #include "src/fill/cap.hpp"
 #include "src/gen/generators.hpp"
 #include "src/geometry/untangle.hpp"
+#include "src/io/hex_io.hpp"
 #include "src/pipeline/mesh_surface.hpp"
 #include "src/quadmap/enumerate.hpp"
 #include "src/weave/weave.hpp"
@@ -50,6 +51,25 @@ void speed(const std::vector<int>& sizes, double scramble, std::uint64_t seed) {
     std::printf("| %d^3 | %zu | %zu | %zu | %s | %d | %d | %.2f | %.2f |\n", n, mesh.hexes.size(), r.inverted_before,
                 r.inverted_after, r.untangled ? "yes" : "no", r.rounds, r.iterations, r.seconds,
                 r.seconds * 1e5 / static_cast<double>(mesh.hexes.size()));
+    std::fflush(stdout);
+  }
+}
+
+/// Each mesh file untangled with its boundary nodes fixed, as placement's
+/// phase 3 would, with the budget given: does a longer run untangle more?
+void files(const std::vector<std::string>& paths, const geometry::UntangleOptions& options) {
+  if (paths.empty()) return;
+  std::printf("\n| mesh | hexes | inverted before | inverted after | rounds | L-BFGS iterations | seconds |\n"
+              "|---|---|---|---|---|---|---|\n");
+  for (const auto& path : paths) {
+    HexMesh mesh = read_hex_mesh(path);
+    std::vector<std::uint32_t> boundary;
+    hex_mesh_boundary(mesh, &boundary);
+    std::vector<bool> fixed(mesh.points.size(), false);
+    for (std::uint32_t v : boundary) fixed[v] = true;
+    const geometry::UntangleReport r = geometry::untangle(mesh, fixed, options);
+    std::printf("| %s | %zu | %zu | %zu | %d | %d | %.1f |\n", path.c_str(), mesh.hexes.size(), r.inverted_before,
+                r.inverted_after, r.rounds, r.iterations, r.seconds);
     std::fflush(stdout);
   }
 }
@@ -98,7 +118,14 @@ int main(int argc, char** argv) {
   app.add_option("--scramble", scramble, "interior nodes moved up to this many cell lengths (default 1.5: nearly every hex inverted)");
   app.add_option("--seed", seed, "of the scrambling (default 1)");
   app.add_option("--quads", quads, "3-connected quadrangulations with A-B quads for the success rate ('' for none; default 6-12)");
+  std::vector<std::string> meshes;
+  loom::geometry::UntangleOptions options;
+  app.add_option("--mesh", meshes, "also untangle these hex mesh files, boundary fixed (repeatable)");
+  app.add_option("--rounds", options.max_rounds, "with --mesh: the untangler's most rounds");
+  app.add_option("--patience", options.patience, "with --mesh: rounds without progress before it gives up");
+  app.add_option("--lambda", options.lambda, "with --mesh: weight of the volume term");
   loom::bench::parse_or_exit(app, argc, argv);
+  files(meshes, options);
   speed(loom::bench::parse_counts(sizes), scramble, seed);
   success(loom::bench::parse_counts(quads));
   return 0;

@@ -22,8 +22,6 @@ using Vector = Eigen::VectorXd;
 
 /// Below this the regularised terms of inverted corners overflow doubles.
 constexpr double kLeastEps = 1e-8;
-/// Rounds without fewer inverted hexes before the untangling gives up.
-constexpr int kPatience = 50;
 
 /// A hex corner: its node, then the ends of its three edges, right-handed.
 struct Corner {
@@ -183,7 +181,7 @@ UntangleReport untangle(HexMesh& mesh, const std::vector<bool>& fixed, const Unt
       best = x;
       improved = report.rounds;
     }
-    if (report.rounds - improved > kPatience) break;
+    if (report.rounds - improved > options.patience) break;
     least = energy.min_det(x);
     if (least > 0) break;
     const double sigma = std::max(1 - value / previous, 0.1);

@@ -22,6 +22,7 @@ struct UntangleOptions {
   int max_rounds = 500;       ///< eps updates
   int max_iterations = 200;   ///< L-BFGS iterations a round
   double lambda = 1.0;        ///< weight of the volume term against the shape term
+  int patience = 50;          ///< rounds without fewer inverted hexes before giving up
 };
 
 struct UntangleReport {
