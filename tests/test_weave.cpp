@@ -5,6 +5,8 @@
 
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
+#include "src/closure/database.hpp"
+#include "src/fill/cap.hpp"
 #include "src/gen/generators.hpp"
 #include "src/io/hex_io.hpp"
 #include "src/stc/build.hpp"
@@ -161,4 +163,17 @@ TEST_CASE("each new attempt is told how the one before it ended") {
     CHECK(previous.whiskers_left > 0);
     CHECK(previous.left.find("whiskers (open front faces) left") != std::string::npos);
   }
+}
+
+TEST_CASE("a surface of genus 1 the weave leaves open is not given to the closure, which needs a sphere") {
+  pipeline::MeshingOptions options;
+  options.attempts = 2;
+  options.closure = pipeline::Closure::full;
+  options.database = closure::database_file(weave::default_rules_dir());
+  options.fill_caps = fill::default_caps_dir();
+  const auto r = pipeline::mesh_surface(gen::torus(4, 6), shipped_rules(), options);
+  CHECK(!r.weave.closed);
+  CHECK(!r.combinatorially_valid());
+  CHECK(r.closure_failure.find("genus 1") != std::string::npos);
+  CHECK(r.made_by.empty());
 }

@@ -232,7 +232,13 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     attempt.strategy.seed = first_seed + r.attempts;
     if (options.before_attempt) options.before_attempt(r.attempts + 1, attempt.strategy, r.weave);
   }
-  if (options.closure != Closure::none) {
+  // Cavities, the search and the fill are built for balls: a surface of
+  // higher genus gets the weave alone, and is told why.
+  const long long euler = static_cast<long long>(surface.points.size()) - static_cast<long long>(surface.quads.size());
+  if (options.closure != Closure::none && euler != 2 && !r.combinatorially_valid())
+    r.closure_failure = fmt::format("it needs a sphere (genus 0), and the surface has genus {}, so only the weave can "
+                                    "mesh it; try more --attempts or another --strategy", (2 - euler) / 2);
+  else if (options.closure != Closure::none) {
     Resources res(options);
     if (!r.combinatorially_valid()) close_cavities_of(r, surface, *best_woven, res, options);
     const bool small = surface.quads.size() <= kDirectSearchQuads;
