@@ -38,8 +38,8 @@ std::string mesh_in_child(const std::string& path, const std::string& where, std
   double x0, y0, z0, x1, y1, z1;
   gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
   const double diagonal = std::hypot(x1 - x0, y1 - y0, z1 - z0);
-  const double h = size.value_or(diagonal / kDefaultDivisions);
   if (!(diagonal > 0) || !std::isfinite(diagonal)) fail_input(where, "the part's bounding box is empty", kHint);
+  const double h = size.value_or(diagonal / kDefaultDivisions);
   if (h < diagonal / kFinestDivisions)
     fail_input(where,
                fmt::format("--size {} is finer than the part's diagonal ({:.4g}) / {}, which would give millions of quads",
