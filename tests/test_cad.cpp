@@ -114,4 +114,9 @@ TEST_CASE("loom mesh: a part to a hex mesh in one command, its surface kept on r
   CHECK(run_cli(fmt::format("mesh {} --size 0 -o {}", (dir / "box.geo").string(), (dir / "bad.vtu").string())).status ==
         2);
   CHECK(!std::filesystem::exists(dir / "bad.vtu"));
+  const auto bad_surface = run_cli(fmt::format("mesh {} --surface {} -o {}", (dir / "box.geo").string(),
+                                               (dir / "box.stl").string(), (dir / "bad.vtu").string()));
+  CHECK(bad_surface.status == 2);
+  CHECK(bad_surface.err.find("box.stl") != std::string::npos);
+  CHECK(bad_surface.err.find("faces meshed by Gmsh") == std::string::npos);  // refused before meshing
 }

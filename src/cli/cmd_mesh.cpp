@@ -10,6 +10,7 @@
 #include "src/cad/cad_part.hpp"
 #include "src/cli/command.hpp"
 #include "src/cli/weave_command.hpp"
+#include "src/io/mesh_format.hpp"
 #include "src/io/surface_io.hpp"
 #include "src/mesh/surface_validation.hpp"
 
@@ -22,6 +23,7 @@ struct MeshOptions {
 
 loom::QuadSurface part_surface(const loom::cli::WeaveCommandOptions& o, const MeshOptions& m,
                                loom::cli::RunBudget& budget) {
+  if (!m.surface.empty()) loom::surface_format_of(m.surface);  // refused before Gmsh's work
   budget.stage("meshing the part's boundary with Gmsh");
   loom::cad::PartSurface part = loom::cad::quad_surface_of_part(o.input, m.size);
   const loom::SurfaceSummary summary = loom::validate_surface(part.surface, o.input);
