@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 
+#include <fmt/ranges.h>
+
 #include "src/cad/gmsh_quads.hpp"
 #include "src/io/gmsh_session.hpp"
 #include "src/util/error.hpp"
@@ -58,16 +60,15 @@ std::string mesh_in_child(const std::string& path, const std::string& where, std
 }  // namespace
 
 bool is_cad_file(const std::filesystem::path& part) {
-  static const std::array<const char*, 7> known{".step", ".stp", ".iges", ".igs", ".brep", ".brp", ".geo"};
   const std::string ext = lower_extension(part);
-  return std::any_of(known.begin(), known.end(), [&](const char* k) { return ext == k; });
+  return std::any_of(kCadExtensions.begin(), kCadExtensions.end(), [&](const char* k) { return ext == k; });
 }
 
 PartSurface quad_surface_of_part(const std::filesystem::path& part, std::optional<double> size) {
   const std::string where = part.string();
   if (!is_cad_file(part))
     fail_input(where, fmt::format("'{}' is not a CAD file loom mesh reads", lower_extension(part)),
-               "give .step, .stp, .iges, .igs, .brep, .brp or .geo (a quad surface goes to 'loom weave')");
+               fmt::format("give {} (a quad surface goes to 'loom weave')", fmt::join(kCadExtensions, " ")));
   if (size && !(*size > 0 && std::isfinite(*size)))
     fail_input(where, fmt::format("--size {} is not a positive length", *size), "give the quads' edge length");
   const std::string bytes =

@@ -3,6 +3,7 @@
 // an even number of quads, by Gmsh (its OpenCASCADE kernel for STEP, IGES and
 // BREP; its own parser for .geo). Gmsh runs in a child process, so a crash or a
 // stray message on a malformed file becomes one error line.
+#include <array>
 #include <filesystem>
 #include <optional>
 
@@ -17,8 +18,8 @@ struct PartSurface {
   int faces = 0;        ///< CAD faces on the part's boundary
 };
 
-/// The file kinds `loom mesh` reads, by extension (lower case): .step .stp
-/// .iges .igs .brep .brp .geo.
+/// The file kinds `loom mesh` reads, by extension (any case).
+inline constexpr std::array<const char*, 7> kCadExtensions{".step", ".stp", ".iges", ".igs", ".brep", ".brp", ".geo"};
 bool is_cad_file(const std::filesystem::path& part);
 
 /// The boundary of the one solid in `part`, meshed free and all-quad (see

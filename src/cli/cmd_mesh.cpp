@@ -6,6 +6,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "src/cad/cad_part.hpp"
 #include "src/cli/command.hpp"
@@ -40,7 +41,7 @@ loom::cli::Register reg{{"mesh", [](CLI::App& app) {
   auto o = std::make_shared<loom::cli::WeaveCommandOptions>();
   auto m = std::make_shared<MeshOptions>();
   app.description("Mesh a CAD part's boundary all-quad with Gmsh, then weave a hex mesh bounded by it");
-  app.add_option("PART", o->input, "one closed solid (.step .stp .iges .igs .brep .brp .geo)")
+  app.add_option("PART", o->input, fmt::format("one closed solid ({})", fmt::join(loom::cad::kCadExtensions, " ")))
       ->required()
       ->check(CLI::ExistingFile);
   app.add_option("--size", m->size,

@@ -234,7 +234,11 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
   }
   // Cavities, the search and the fill are built for balls: a surface of
   // higher genus gets the weave alone, and is told why.
-  const long long euler = static_cast<long long>(surface.points.size()) - static_cast<long long>(surface.quads.size());
+  std::vector<bool> used(surface.points.size(), false);
+  for (const Quad& q : surface.quads)
+    for (std::uint32_t v : q) used[v] = true;
+  // V - E + F with E = 2F on a closed quad surface.
+  const long long euler = std::count(used.begin(), used.end(), true) - static_cast<long long>(surface.quads.size());
   if (options.closure != Closure::none && euler != 2 && !r.combinatorially_valid())
     r.closure_failure = fmt::format("it needs a sphere (genus 0), and the surface has genus {}, so only the weave can "
                                     "mesh it; try more --attempts or another --strategy", (2 - euler) / 2);
