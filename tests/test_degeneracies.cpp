@@ -47,6 +47,12 @@ std::vector<engine::Rule> insertion(const std::string& name) {
   return engine::compile_rules(test::slurp(file), file.string(), *stc::StcSchema::get().schema);
 }
 
+/// A rule of rules/report/: the report's own operations, beside the shipped prevention.
+std::vector<engine::Rule> report_rule(const std::string& name) {
+  auto file = weave::default_rules_dir() / "report" / (name + ".rule");
+  return engine::compile_rules(test::slurp(file), file.string(), *stc::StcSchema::get().schema);
+}
+
 /// Runs `rules` until none applies; returns the applications by rule name.
 std::map<std::string, std::size_t> run(stc::Stc& s, std::vector<engine::Rule> rules, std::size_t max_steps = 1000) {
   engine::Engine eng(s.graph(), std::move(rules), weave::weave_actions(s));
@@ -352,4 +358,43 @@ TEST_CASE("hex insertions k = 3 along a strip, 4 (trough) and 5 (cup): one hex g
     CHECK(dualize_and_check(s, c.surface).combinatorial_valid());
     if (std::string(c.rule) == "cup") CHECK(s.hexes() == 1);  // a seam closed the pocket: the cube itself
   }
+}
+
+TEST_CASE("knife_pull_back: where a seam would fold a crossed hex's front face, that hex comes off and the seam goes on") {
+  auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  for (auto& r : report_rule("knife_pull_back")) rules.push_back(std::move(r));
+  auto count = [](const std::map<std::string, std::size_t>& m, const char* name) {
+    auto it = m.find(name);
+    return it == m.end() ? std::size_t{0} : it->second;
+  };
+  std::size_t pulled = 0;
+  // Where the bench of the ordering (docs/degeneracies.md) saw it apply.
+  for (auto [faces, seed] : {std::pair{18, 8}, {20, 1}, {22, 0}, {22, 6}}) {
+    CAPTURE(faces);
+    CAPTURE(seed);
+    stc::Stc s = stc::build_from_surface(gen::randquad(faces, static_cast<std::uint64_t>(seed)));
+    engine::Engine eng(s.graph(), rules, weave::weave_actions(s));
+    bool just_pulled = false;
+    for (std::size_t step = 0; step < 2000; ++step) {
+      const stc::Stc before = s;
+      const auto applied = eng.applications();
+      if (!eng.step()) break;
+      REQUIRE(s.check_invariants() == "");
+      if (just_pulled) CHECK(count(eng.applications(), "seam") == count(applied, "seam") + 1);
+      just_pulled = count(eng.applications(), "knife_pull_back") > count(applied, "knife_pull_back");
+      if (!just_pulled) continue;
+      ++pulled;
+      // One hex off, its three front faces gone and the three it was glued onto open again.
+      CHECK(s.hexes() + 1 == before.hexes());
+      CHECK(s.whiskers() == before.whiskers());
+      CHECK(s.graph().size(s.ids().node) + 1 == before.graph().size(before.ids().node));
+      CHECK(front_is_closed(s));
+      engine::Id gone = engine::no_element;
+      for (engine::Id h : before.graph().members(before.ids().hex))
+        if (!s.graph().alive(h)) gone = h;
+      REQUIRE(gone != engine::no_element);
+      if (pulled == 1) picture(before, "knife-pull-back", gone, {gone});
+    }
+  }
+  CHECK(pulled >= 4);
 }
