@@ -31,7 +31,7 @@ Hex sorted_face(const Quad& q) {
 /// The budget of a search on a front; `again`: a search on what another left.
 std::size_t budget_for(std::size_t front_quads, std::size_t least, bool again) {
   if (again && front_quads <= kSmallFrontQuads) return std::max(least, kSmallFrontExpansions);
-  return std::clamp<std::size_t>(kExpansionsPerQuad * front_quads, least, kMostExpansions);
+  return std::max(least, std::min(kExpansionsPerQuad * front_quads, kMostExpansions));
 }
 
 struct Builder {

@@ -24,6 +24,19 @@ namespace {
 /// 77 hexes with 500 expansions, 55 with 50,000) it gets the full one.
 constexpr std::size_t kBesideValidExpansions = 500;
 constexpr std::size_t kPublishedSmallBound = 72;
+constexpr std::size_t kPublishedSmallQuads = 20;
+
+/// A surface of at most 20 quads still over 72 hexes after that gets one wide
+/// search: fronts may grow by 16 quads rather than 8, with 1,000,000
+/// expansions and room for 20,000,000 open states. Quadrangulation 14 54 (two
+/// poles of degree 7): 79 hexes at growth 8, where every state within that
+/// bound is expanded in 780,000 expansions; at growth 16, 73 with 4,000,000
+/// open states, 67 with 20,000,000 (255 s, 3.6 GB). Counted in expansions, so
+/// its seconds guard is only against a runaway.
+constexpr int kWideGrowth = 16;
+constexpr std::size_t kWideExpansions = 1'000'000;
+constexpr std::size_t kWideOpenStates = 20'000'000;
+constexpr double kWideSeconds = 3'600;
 
 /// Fewer hexes <= 0, or as many and fewer < 0.2.
 bool improves(const weave::SmoothingReport& a, const weave::SmoothingReport& b) {
@@ -175,11 +188,9 @@ void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMe
 /// The search alone from the surface (the fill of what it leaves too, with
 /// `fill`); kept if it beats the mesh there is.
 void search_from_surface(MeshingResult& r, const QuadSurface& surface, Resources& res, const MeshingOptions& options,
-                         std::size_t expansions, bool fill) {
+                         const closure::ClosureOptions& search, bool fill) {
   if (options.on_stage) options.on_stage("searching from the surface");
   try {
-    closure::ClosureOptions search = options.search;
-    search.limits.max_expansions = expansions;
     ClosedMesh closed = close_cavities(surface, HexMesh{surface.points, {}}, res.database(),
                                        fill ? res.caps() : std::vector<fill::Cap>{}, search);
     if (!closed.complete || (r.combinatorially_valid() && closed.mesh.hexes.size() >= hexes_before_layer(r))) return;
@@ -246,16 +257,29 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     Resources res(options);
     if (!r.combinatorially_valid()) close_cavities_of(r, surface, *best_woven, res, options);
     const bool small = surface.quads.size() <= kDirectSearchQuads;
+    auto budget = [&options](std::size_t expansions) {
+      closure::ClosureOptions search = options.search;
+      search.limits.max_expansions = expansions;
+      return search;
+    };
     // Beside a valid mesh within the published bound, only a short search: it has to find a smaller one.
-    if (small)
+    if (small) {
       search_from_surface(r, surface, res, options,
-                          within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions, false);
+                          budget(within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions), false);
+      if (surface.quads.size() <= kPublishedSmallQuads && !within_published_bound(r)) {
+        closure::ClosureOptions wide = budget(kWideExpansions);
+        wide.max_growth = std::max(wide.max_growth, kWideGrowth);
+        wide.limits.max_open = std::max(wide.limits.max_open, kWideOpenStates);
+        wide.limits.max_seconds = std::max(wide.limits.max_seconds, kWideSeconds);
+        search_from_surface(r, surface, res, options, wide, false);
+      }
+    }
     // The woven hexes kept can leave cavities harder than the surface: when
     // the closure had to fill, the search alone from the surface is tried too.
     else if (r.made_by == "closed" && r.closure.filled > 0)
       search_from_surface(r, surface, res, options,
-                          std::clamp<std::size_t>(kExpansionsPerQuad * surface.quads.size(), kSmallFrontExpansions,
-                                                  kMostExpansions),
+                          budget(std::clamp<std::size_t>(kExpansionsPerQuad * surface.quads.size(),
+                                                         kSmallFrontExpansions, kMostExpansions)),
                           options.closure == Closure::full);
     if (!r.combinatorially_valid() && options.closure == Closure::full) {
       if (options.on_stage) options.on_stage("filling the surface");
