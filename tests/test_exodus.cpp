@@ -279,12 +279,13 @@ TEST_CASE("loom weave -o out.exo carries the same cell fields as the .vtu output
       f.values.push_back(std::stod(vtu.substr(line, vtu.find('\n', line) - line)));
     fields.push_back(f);
   }
-  REQUIRE(fields.size() == 5);
+  REQUIRE(fields.size() == 6);
   CHECK(fields[0].name == "source");
   CHECK(fields[1].name == "scaled_jacobian");
   CHECK(fields[2].name == "sheet_i");
   CHECK(fields[3].name == "sheet_j");
   CHECK(fields[4].name == "sheet_k");
+  CHECK(fields[5].name == "inversion_cause");
   check_contents(exo, mesh, fields);
   // The side set is the woven mesh's boundary: the box's 24 quads.
   CHECK(exo.sides.size() == read_surface(dir / "box.obj").quads.size());

@@ -25,20 +25,25 @@ bool normalize(Vec3& e) {
 }
 }  // namespace
 
-double scaled_jacobian(const HexMesh& mesh, std::size_t hex) {
+const std::array<int, 3>& hex_corner_neighbours(int corner) { return kCornerEdges[static_cast<std::size_t>(corner)]; }
+
+double corner_scaled_jacobian(const HexMesh& mesh, std::size_t hex, int corner) {
   const Hex& nodes = mesh.hexes[hex];
-  for (std::uint32_t v : nodes)
-    if (v >= mesh.points.size()) return -1.0;
+  const auto& n = kCornerEdges[static_cast<std::size_t>(corner)];
+  for (int i : {corner, n[0], n[1], n[2]})
+    if (nodes[static_cast<std::size_t>(i)] >= mesh.points.size()) return -1.0;
+  const Vec3& p = mesh.points[nodes[static_cast<std::size_t>(corner)]];
+  Vec3 e1 = mesh.points[nodes[static_cast<std::size_t>(n[0])]] - p;
+  Vec3 e2 = mesh.points[nodes[static_cast<std::size_t>(n[1])]] - p;
+  Vec3 e3 = mesh.points[nodes[static_cast<std::size_t>(n[2])]] - p;
+  if (!normalize(e1) || !normalize(e2) || !normalize(e3)) return -1.0;
+  const double value = dot(e1, cross(e2, e3));
+  return std::isfinite(value) ? value : -1.0;
+}
+
+double scaled_jacobian(const HexMesh& mesh, std::size_t hex) {
   double worst = 1.0;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vec3& p = mesh.points[nodes[corner]];
-    const auto& n = kCornerEdges[corner];
-    Vec3 e1 = mesh.points[nodes[n[0]]] - p, e2 = mesh.points[nodes[n[1]]] - p, e3 = mesh.points[nodes[n[2]]] - p;
-    if (!normalize(e1) || !normalize(e2) || !normalize(e3)) return -1.0;
-    const double value = dot(e1, cross(e2, e3));
-    if (!std::isfinite(value)) return -1.0;
-    worst = std::min(worst, value);
-  }
+  for (int corner = 0; corner < 8; ++corner) worst = std::min(worst, corner_scaled_jacobian(mesh, hex, corner));
   return worst;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // What an accepted hex mesh is (docs/validity.md, after the design notes'
 // validity.md): combinatorial criteria 1-6 and the scaled Jacobian (7).
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -48,6 +49,13 @@ std::string criterion_name(int number);
 /// edge vectors so that it does not depend on the scale; -1 for a corner
 /// with a zero-length or non-finite edge, and for a hex with a node out of range.
 double scaled_jacobian(const HexMesh& mesh, std::size_t hex);
+
+/// The same at one corner (0..7, VTK order) of a hex.
+double corner_scaled_jacobian(const HexMesh& mesh, std::size_t hex, int corner);
+
+/// The three corners joined to `corner` by an edge of the hex, in the order
+/// whose edge vectors span a positive corner.
+const std::array<int, 3>& hex_corner_neighbours(int corner);
 
 /// Applies every criterion. With `boundary`, criterion 6 compares the mesh's
 /// boundary quads with it (same nodes at the same coordinates, one to one).

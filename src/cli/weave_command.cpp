@@ -16,6 +16,7 @@
 #include "src/check/quality_histogram.hpp"
 #include "src/check/validity.hpp"
 #include "src/cli/weave_report.hpp"
+#include "src/geometry/inversion_causes.hpp"
 #include "src/io/hex_io.hpp"
 #include "src/io/mesh_format.hpp"
 #include "src/stc/primal.hpp"
@@ -235,8 +236,10 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
     std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}{}; {}\n", hexes, hexes == 1 ? "" : "es",
                              result.weave.steps, counts, attempt, layer, quality);
   if (q.below_zero > 0) {
-    std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}); the mesh is written "
-                             "for its connectivity\n", q.below_zero, q.min_scaled_jacobian);
+    std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}): {}; the cell "
+                             "field inversion_cause names them; the mesh is written for its connectivity\n",
+                             q.below_zero, q.min_scaled_jacobian,
+                             geometry::describe(geometry::diagnose_inversions(*result.mesh)));
     return 3;
   }
   return 0;

@@ -7,6 +7,7 @@
 #include "src/check/hex_sheets.hpp"
 #include "src/check/quality_histogram.hpp"
 #include "src/check/validity.hpp"
+#include "src/geometry/inversion_causes.hpp"
 
 namespace loom::cli {
 
@@ -59,6 +60,14 @@ nlohmann::json report_json(const std::string& input, const pipeline::MeshingResu
     j["below_zero"] = r.check->quality.below_zero;
     j["below_0_2"] = r.check->quality.below_0_2;
     j["scaled_jacobian_histogram"] = histogram_json(quality_histogram(*r.mesh));
+    {
+      const auto d = geometry::diagnose_inversions(*r.mesh);
+      nlohmann::json causes;
+      for (auto c : {geometry::InversionCause::locked_corner, geometry::InversionCause::crowded_edge,
+                     geometry::InversionCause::unexplained})
+        causes[geometry::cause_name(c)] = d.of(c);
+      j["inversion_causes"] = causes;
+    }
   }
   j["boundary_layer_hexes"] = r.boundary_layer.hexes_added;
   j["smoothing_iterations"] = r.smoothing.iterations;
@@ -82,6 +91,9 @@ std::vector<CellField> cell_fields(const HexMesh& mesh, const std::vector<closur
     for (const auto& three : sheets.of_hex) sheet.values.push_back(three[d]);
     fields.push_back(std::move(sheet));
   }
+  CellField cause{"inversion_cause", {}, CellField::Kind::integer};
+  for (auto c : geometry::diagnose_inversions(mesh).cause) cause.values.push_back(static_cast<double>(c));
+  fields.push_back(std::move(cause));
   return fields;
 }
 

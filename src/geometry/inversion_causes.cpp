@@ -1,0 +1,102 @@
+#include "src/geometry/inversion_causes.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "src/check/hex_topology.hpp"
+#include "src/check/validity.hpp"
+
+namespace loom::geometry {
+
+const char* cause_name(InversionCause cause) {
+  switch (cause) {
+    case InversionCause::none: return "none";
+    case InversionCause::locked_corner: return "locked_corner";
+    case InversionCause::crowded_edge: return "crowded_edge";
+    case InversionCause::unexplained: return "unexplained";
+  }
+  return "?";
+}
+
+namespace {
+/// Criterion 1, which the mesh's topology needs.
+bool distinct_nodes_in_range(const HexMesh& mesh) {
+  return std::all_of(mesh.hexes.begin(), mesh.hexes.end(), [&](const Hex& h) {
+    for (int i = 0; i < 8; ++i) {
+      if (h[static_cast<std::size_t>(i)] >= mesh.points.size()) return false;
+      for (int k = 0; k < i; ++k)
+        if (h[static_cast<std::size_t>(i)] == h[static_cast<std::size_t>(k)]) return false;
+    }
+    return true;
+  });
+}
+}  // namespace
+
+InversionDiagnosis diagnose_inversions(const HexMesh& mesh) {
+  if (!distinct_nodes_in_range(mesh)) {
+    InversionDiagnosis d;
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+      const bool inverted = scaled_jacobian(mesh, h) <= 0;
+      d.cause.push_back(inverted ? InversionCause::unexplained : InversionCause::none);
+      if (inverted) ++d.count[static_cast<std::size_t>(InversionCause::unexplained)];
+    }
+    return d;
+  }
+  const HexTopology topo = build_hex_topology(mesh);
+  std::vector<bool> on_boundary(mesh.points.size(), false);
+  std::vector<bool> boundary_edge(topo.edge_count, false);
+  std::vector<std::uint32_t> hexes_round(topo.edge_count, 0);
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+    for (int e = 0; e < 12; ++e) ++hexes_round[topo.hex_edges[12 * h + static_cast<std::size_t>(e)]];
+    for (int f = 0; f < 6; ++f) {
+      if (!topo.is_boundary_face(topo.hex_faces[6 * h + static_cast<std::size_t>(f)])) continue;
+      for (std::uint32_t v : face_nodes(mesh.hexes[h], f)) on_boundary[v] = true;
+      for (int e : kHexFaceEdges[static_cast<std::size_t>(f)])
+        boundary_edge[topo.hex_edges[12 * h + static_cast<std::size_t>(e)]] = true;
+    }
+  }
+  InversionDiagnosis d;
+  d.cause.assign(mesh.hexes.size(), InversionCause::none);
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+    const Hex& hex = mesh.hexes[h];
+    bool locked = false, inverted = false;
+    for (int c = 0; c < 8; ++c) {
+      if (corner_scaled_jacobian(mesh, h, c) > 0) continue;
+      inverted = true;
+      auto fixed = [&](int k) { return on_boundary[hex[static_cast<std::size_t>(k)]]; };
+      const auto& n = hex_corner_neighbours(c);
+      if (fixed(c) && std::all_of(n.begin(), n.end(), fixed)) locked = true;
+    }
+    if (!inverted) continue;
+    std::uint32_t crowded = 0;
+    for (int e = 0; e < 12; ++e) {
+      const std::uint32_t edge = topo.hex_edges[12 * h + static_cast<std::size_t>(e)];
+      if (!boundary_edge[edge]) crowded = std::max(crowded, hexes_round[edge]);
+    }
+    InversionCause& cause = d.cause[h];
+    if (locked) cause = InversionCause::locked_corner;
+    else if (crowded >= kCrowdedEdge) {
+      cause = InversionCause::crowded_edge;
+      d.most_crowded = std::max(d.most_crowded, crowded);
+    } else
+      cause = InversionCause::unexplained;
+    ++d.count[static_cast<std::size_t>(cause)];
+  }
+  return d;
+}
+
+std::string describe(const InversionDiagnosis& d) {
+  std::vector<std::string> parts;
+  if (auto n = d.of(InversionCause::locked_corner))
+    parts.push_back(fmt::format("{} with a corner locked by the boundary (no placement can fix it)", n));
+  if (auto n = d.of(InversionCause::crowded_edge))
+    parts.push_back(fmt::format("{} on interior edges of {} to {} hexes", n, kCrowdedEdge, d.most_crowded));
+  if (auto n = d.of(InversionCause::unexplained))
+    parts.push_back(fmt::format("{} where the untangler stopped short with no such cause", n));
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? ", " : "") + parts[i];
+  return out;
+}
+
+}  // namespace loom::geometry
