@@ -218,8 +218,15 @@ TEST_CASE("closure is deterministic: the same surface gives the same hexes, and 
 
 /// What `loom weave --closure search` does: the shipped rules, 16 attempts,
 /// cavity closure and the search, no fill.
-pipeline::MeshingResult mesh_without_fill(const QuadSurface& surface) {
+pipeline::MeshingResult mesh_without_fill(const QuadSurface& surface,
+                                          std::size_t* searches_from_surface = nullptr,
+                                          std::size_t wide_expansions = pipeline::wide_search_defaults().limits.max_expansions) {
   pipeline::MeshingOptions options;
+  if (searches_from_surface)
+    options.on_stage = [searches_from_surface](const char* stage) {
+      *searches_from_surface += std::string(stage) == "searching from the surface";
+    };
+  options.wide_search.limits.max_expansions = wide_expansions;
   options.attempts = 16;
   options.closure = pipeline::Closure::search;
   options.database = database_file(weave::default_rules_dir());
@@ -242,14 +249,29 @@ TEST_CASE("loom weave's pipeline searches a small surface fully when the weave's
   // Quadrangulation 16 90: the weave gives a valid mesh of 117 hexes; a short
   // search from the surface finds 77, the full one 55 (before the boundary layer).
   const QuadSurface surface = gen::quadrangulation(16, 90);
-  const pipeline::MeshingResult r = mesh_without_fill(surface);
+  std::size_t searches = 0;
+  const pipeline::MeshingResult r = mesh_without_fill(surface, &searches);
   REQUIRE(r.combinatorially_valid());
   CHECK(r.made_by == "searched");
   CHECK(r.mesh->hexes.size() - r.boundary_layer.hexes_added <= 72);
+  CHECK(searches == 1);  // within the bound after it: no wide search
   // Placement's global untangling leaves none of the 8 hexes <= 0 that moving
   // one node at a time left.
   CHECK(r.check->quality.below_zero == 0);
   CHECK(r.smoothing.global_rounds > 0);
+}
+
+TEST_CASE("a small surface still over 72 hexes after the direct search gets a wide one" *
+          doctest::skip(kSkipFullSearch)) {
+  // Quadrangulation 14 54 (two poles of degree 7): 79 hexes after the direct
+  // search. The wide search's own budget (1,000,000 expansions, 255 s) finds
+  // 67; here it gets 2,000, so only that it runs, and what it may keep, is tested.
+  const QuadSurface surface = gen::quadrangulation(14, 54);
+  std::size_t searches = 0;
+  const pipeline::MeshingResult r = mesh_without_fill(surface, &searches, 2'000);
+  REQUIRE(r.combinatorially_valid());
+  CHECK(searches == 2);
+  CHECK(r.mesh->hexes.size() - r.boundary_layer.hexes_added <= 79);
 }
 
 // Sixteen weave attempts on one input are the point of this case too: 8 s

@@ -26,17 +26,6 @@ constexpr std::size_t kBesideValidExpansions = 500;
 constexpr std::size_t kPublishedSmallBound = 72;
 constexpr std::size_t kPublishedSmallQuads = 20;
 
-/// A surface of at most 20 quads still over 72 hexes after that gets one wide
-/// search: fronts may grow by 16 quads rather than 8, with 1,000,000
-/// expansions and room for 20,000,000 open states. Quadrangulation 14 54 (two
-/// poles of degree 7): 79 hexes at growth 8, where every state within that
-/// bound is expanded in 780,000 expansions; at growth 16, 73 with 4,000,000
-/// open states, 67 with 20,000,000 (255 s, 3.6 GB). Counted in expansions, so
-/// its seconds guard is only against a runaway.
-constexpr int kWideGrowth = 16;
-constexpr std::size_t kWideExpansions = 1'000'000;
-constexpr std::size_t kWideOpenStates = 20'000'000;
-constexpr double kWideSeconds = 3'600;
 
 /// Fewer hexes <= 0, or as many and fewer < 0.2.
 bool improves(const weave::SmoothingReport& a, const weave::SmoothingReport& b) {
@@ -223,6 +212,21 @@ void fill_whole_surface(MeshingResult& r, const QuadSurface& surface, Resources&
 
 }  // namespace
 
+/// A surface of at most 20 quads still over 72 hexes after the direct search
+/// gets one wide search. Quadrangulation 14 54 (two poles of degree 7): 79
+/// hexes at growth 8, where every state within that bound is expanded in
+/// 780,000 expansions; at growth 16 with 1,000,000, 73 with room for 4,000,000
+/// open states, 67 with 20,000,000 (255 s, 3.6 GB). Counted in expansions, so
+/// its seconds guard is only against a runaway.
+closure::ClosureOptions wide_search_defaults() {
+  closure::ClosureOptions wide;
+  wide.max_growth = 16;
+  wide.limits.max_expansions = 1'000'000;
+  wide.limits.max_open = 20'000'000;
+  wide.limits.max_seconds = 3'600;
+  return wide;
+}
+
 MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const MeshingOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   MeshingResult r;
@@ -267,11 +271,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
       search_from_surface(r, surface, res, options,
                           budget(within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions), false);
       if (surface.quads.size() <= kPublishedSmallQuads && !within_published_bound(r)) {
-        closure::ClosureOptions wide = budget(kWideExpansions);
-        wide.max_growth = std::max(wide.max_growth, kWideGrowth);
-        wide.limits.max_open = std::max(wide.limits.max_open, kWideOpenStates);
-        wide.limits.max_seconds = std::max(wide.limits.max_seconds, kWideSeconds);
-        search_from_surface(r, surface, res, options, wide, false);
+        search_from_surface(r, surface, res, options, options.wide_search, false);
       }
     }
     // The woven hexes kept can leave cavities harder than the surface: when

@@ -45,6 +45,10 @@ enum class Closure {
 /// to beat that one).
 inline constexpr std::size_t kDirectSearchQuads = kSmallFrontQuads;
 
+/// Fronts 16 quads larger than the surface, 1,000,000 expansions, room for
+/// 20,000,000 open states, and a seconds guard of an hour.
+closure::ClosureOptions wide_search_defaults();
+
 struct MeshingOptions {
   weave::WeaveOptions weave;
   /// Weaves in all (see step 1); deterministic: the same attempts in the same order.
@@ -59,6 +63,9 @@ struct MeshingOptions {
   /// The database file and the fill's caps directory, read when first needed.
   std::filesystem::path database, fill_caps;
   closure::ClosureOptions search;
+  /// The wide search a surface of at most 20 quads gets when the searches
+  /// before it leave it over 72 hexes (mesh_surface.cpp has the figures).
+  closure::ClosureOptions wide_search = wide_search_defaults();
 };
 
 struct MeshingResult {
