@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "src/check/criteria.hpp"
 #include "src/check/hex_topology.hpp"
 #include "src/check/validity.hpp"
 
@@ -19,22 +20,8 @@ const char* cause_name(InversionCause cause) {
   return "?";
 }
 
-namespace {
-/// Criterion 1, which the mesh's topology needs.
-bool distinct_nodes_in_range(const HexMesh& mesh) {
-  return std::all_of(mesh.hexes.begin(), mesh.hexes.end(), [&](const Hex& h) {
-    for (int i = 0; i < 8; ++i) {
-      if (h[static_cast<std::size_t>(i)] >= mesh.points.size()) return false;
-      for (int k = 0; k < i; ++k)
-        if (h[static_cast<std::size_t>(i)] == h[static_cast<std::size_t>(k)]) return false;
-    }
-    return true;
-  });
-}
-}  // namespace
-
 InversionDiagnosis diagnose_inversions(const HexMesh& mesh) {
-  if (!distinct_nodes_in_range(mesh)) {
+  if (!criteria::distinct_nodes(mesh).passed) {  // no topology to go by
     InversionDiagnosis d;
     for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
       const bool inverted = scaled_jacobian(mesh, h) <= 0;

@@ -45,8 +45,9 @@ struct InversionDiagnosis {
 /// to go by: its inverted hexes are all unexplained.
 InversionDiagnosis diagnose_inversions(const HexMesh& mesh);
 
-/// "4 with a corner locked by the boundary, 12 on interior edges of 6 to 9
-/// hexes, 8 unexplained" (the parts with a count > 0; "" when none).
+/// "4 with a corner locked by the boundary (...), 12 on interior edges of 6
+/// to 9 hexes, 8 where the untangler stopped short with no such cause": the
+/// parts with a count > 0; "" when no hex is inverted.
 std::string describe(const InversionDiagnosis& d);
 
 }  // namespace loom::geometry
