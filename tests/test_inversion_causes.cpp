@@ -80,7 +80,7 @@ TEST_CASE("hexes inverted at a free node on an interior edge of six hexes are pu
   CHECK(d.most_crowded == 6);
   for (std::size_t h = 0; h < m.hexes.size(); ++h)
     CHECK((d.cause[h] == InversionCause::crowded_edge) == (scaled_jacobian(m, h) <= 0));
-  CHECK(geometry::describe(d).find("on interior edges of 6 to 6 hexes") != std::string::npos);
+  CHECK(geometry::describe(d).find("on interior edges of 6 hexes") != std::string::npos);
 }
 
 TEST_CASE("hexes inverted round regular interior edges have no cause to name") {

@@ -78,7 +78,9 @@ std::string describe(const InversionDiagnosis& d) {
   if (auto n = d.of(InversionCause::locked_corner))
     parts.push_back(fmt::format("{} with a corner locked by the boundary (no placement can fix it)", n));
   if (auto n = d.of(InversionCause::crowded_edge))
-    parts.push_back(fmt::format("{} on interior edges of {} to {} hexes", n, kCrowdedEdge, d.most_crowded));
+    parts.push_back(d.most_crowded == kCrowdedEdge
+                        ? fmt::format("{} on interior edges of {} hexes", n, kCrowdedEdge)
+                        : fmt::format("{} on interior edges of {} to {} hexes", n, kCrowdedEdge, d.most_crowded));
   if (auto n = d.of(InversionCause::unexplained))
     parts.push_back(fmt::format("{} where the untangler stopped short with no such cause", n));
   std::string out;
