@@ -42,6 +42,19 @@ TEST_CASE("--max-memory stops a weave that needs more, with one line and status 
   CHECK_MESSAGE(r.err.rfind("loom: out of memory: ", 0) == 0, r.err);
   CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
 }
+
+TEST_CASE("--max-memory: the wide search gives way, and the mesh found before it is written") {
+  // Quadrangulation 14 54: 79 hexes before the wide search, which needs 3.6 GB
+  // to find 67; under a 1,500 MB cap it runs out, and the 79 stay.
+  ScratchDir dir("memory-wide");
+  REQUIRE(run_cli("gen quadrangulation 14 54 -o " + (dir / "q.obj").string()).status == 0);
+  auto r = run_cli_unchecked("weave " + (dir / "q.obj").string() + " -o " + (dir / "out.vtk").string() +
+                             " --max-memory 1500");
+  CHECK_MESSAGE((r.status == 0 || r.status == 3), r.err);
+  CHECK(r.out.find("searched: ") == 0);
+  CHECK(r.err.find("out of memory") == std::string::npos);
+  CHECK(std::filesystem::exists(dir / "out.vtk"));
+}
 #endif
 
 TEST_CASE("--progress writes a line as each stage starts, also into a file; bad budgets are refused") {

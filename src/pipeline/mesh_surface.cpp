@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <new>
 #include <optional>
 #include <stdexcept>
 
@@ -270,9 +271,13 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     if (small) {
       search_from_surface(r, surface, res, options,
                           budget(within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions), false);
-      if (surface.quads.size() <= kPublishedSmallQuads && !within_published_bound(r)) {
-        search_from_surface(r, surface, res, options, options.wide_search, false);
-      }
+      // The wide search can only improve a mesh the run already has: when it
+      // runs out of memory (--max-memory), it gives way and that mesh stays.
+      if (surface.quads.size() <= kPublishedSmallQuads && !within_published_bound(r)) try {
+          search_from_surface(r, surface, res, options, options.wide_search, false);
+        } catch (const std::bad_alloc&) {
+          if (!r.combinatorially_valid()) throw;
+        }
     }
     // The woven hexes kept can leave cavities harder than the surface: when
     // the closure had to fill, the search alone from the surface is tried too.
