@@ -27,7 +27,6 @@ constexpr std::size_t kBesideValidExpansions = 500;
 constexpr std::size_t kPublishedSmallBound = 72;
 constexpr std::size_t kPublishedSmallQuads = 20;
 
-
 /// Fewer hexes <= 0, or as many and fewer < 0.2.
 bool improves(const weave::SmoothingReport& a, const weave::SmoothingReport& b) {
   if (a.below_zero_after != b.below_zero_after) return a.below_zero_after < b.below_zero_after;
