@@ -191,7 +191,7 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
     std::cerr << "loom: weave closed but the result is not a valid hex mesh: " << why << after << "; nothing written\n";
     return 1;
   }
-  loom::write_hex_mesh(o.output, *result.mesh, cell_fields(*result.mesh, result.source));
+  loom::write_hex_mesh(o.output, *result.mesh, cell_fields(*result.mesh, result.source, result.inversions));
   if (!o.plot.empty())
     loom::write_text_atomically(o.plot, loom::histogram_svg(loom::quality_histogram(*result.mesh),
                                                             o.input + ": " + o.output));
@@ -235,11 +235,15 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
   else
     std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}{}; {}\n", hexes, hexes == 1 ? "" : "es",
                              result.weave.steps, counts, attempt, layer, quality);
+  if (!result.wide_search_stopped.empty())
+    std::cerr << fmt::format("loom: note: the wide search (for a mesh within 72 hexes) stopped: {}; the mesh found "
+                             "before it is written; raise --max-memory to let it finish\n",
+                             result.wide_search_stopped);
   if (q.below_zero > 0) {
     std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}): {}; the cell "
                              "field inversion_cause names them; the mesh is written for its connectivity\n",
                              q.below_zero, q.min_scaled_jacobian,
-                             geometry::describe(geometry::diagnose_inversions(*result.mesh)));
+                             geometry::describe(result.inversions));
     return 3;
   }
   return 0;

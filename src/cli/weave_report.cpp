@@ -60,14 +60,11 @@ nlohmann::json report_json(const std::string& input, const pipeline::MeshingResu
     j["below_zero"] = r.check->quality.below_zero;
     j["below_0_2"] = r.check->quality.below_0_2;
     j["scaled_jacobian_histogram"] = histogram_json(quality_histogram(*r.mesh));
-    {
-      const auto d = geometry::diagnose_inversions(*r.mesh);
-      nlohmann::json causes;
-      for (auto c : {geometry::InversionCause::locked_corner, geometry::InversionCause::crowded_edge,
-                     geometry::InversionCause::unexplained})
-        causes[geometry::cause_name(c)] = d.of(c);
-      j["inversion_causes"] = causes;
-    }
+    nlohmann::json causes;
+    for (auto c : {geometry::InversionCause::locked_corner, geometry::InversionCause::crowded_edge,
+                   geometry::InversionCause::unexplained})
+      causes[geometry::cause_name(c)] = r.inversions.of(c);
+    j["inversion_causes"] = causes;
   }
   j["boundary_layer_hexes"] = r.boundary_layer.hexes_added;
   j["smoothing_iterations"] = r.smoothing.iterations;
@@ -76,10 +73,12 @@ nlohmann::json report_json(const std::string& input, const pipeline::MeshingResu
   if (!r.weave.closed) j["left"] = r.weave.left;
   if (!r.failure.empty()) j["failure"] = r.failure;
   if (!r.fill_failure.empty()) j["fill_failure"] = r.fill_failure;
+  if (!r.wide_search_stopped.empty()) j["wide_search_stopped"] = r.wide_search_stopped;
   return j;
 }
 
-std::vector<CellField> cell_fields(const HexMesh& mesh, const std::vector<closure::HexSource>& sources) {
+std::vector<CellField> cell_fields(const HexMesh& mesh, const std::vector<closure::HexSource>& sources,
+                                   const geometry::InversionDiagnosis& inversions) {
   CellField source{"source", {}, CellField::Kind::integer};
   for (auto s : sources) source.values.push_back(static_cast<double>(s));
   CellField quality{"scaled_jacobian", {}, CellField::Kind::real};
@@ -92,7 +91,7 @@ std::vector<CellField> cell_fields(const HexMesh& mesh, const std::vector<closur
     fields.push_back(std::move(sheet));
   }
   CellField cause{"inversion_cause", {}, CellField::Kind::integer};
-  for (auto c : geometry::diagnose_inversions(mesh).cause) cause.values.push_back(static_cast<double>(c));
+  for (auto c : inversions.cause) cause.values.push_back(static_cast<double>(c));
   fields.push_back(std::move(cause));
   return fields;
 }

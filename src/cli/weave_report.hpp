@@ -18,7 +18,9 @@ nlohmann::json report_json(const std::string& input, const pipeline::MeshingResu
 /// Where each hex came from (0 woven, 1 searched, 2 database, 3 filled,
 /// 4 pillow), its scaled Jacobian (the minimum over its corners, as criterion 7
 /// measures it), and the three sheets it lies on (those its edges 0-1, 0-3 and
-/// 0-4 cross; check/hex_sheets.hpp).
-std::vector<CellField> cell_fields(const HexMesh& mesh, const std::vector<closure::HexSource>& sources);
+/// 0-4 cross; check/hex_sheets.hpp), and why it is inverted (`inversions`, of
+/// this mesh).
+std::vector<CellField> cell_fields(const HexMesh& mesh, const std::vector<closure::HexSource>& sources,
+                                   const geometry::InversionDiagnosis& inversions);
 
 }  // namespace loom::cli

@@ -276,6 +276,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
           search_from_surface(r, surface, res, options, options.wide_search, false);
         } catch (const std::bad_alloc&) {
           if (!r.combinatorially_valid()) throw;
+          r.wide_search_stopped = "out of memory";
         }
     }
     // The woven hexes kept can leave cavities harder than the surface: when
@@ -290,6 +291,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
       fill_whole_surface(r, surface, res);
     }
   }
+  if (r.mesh) r.inversions = geometry::diagnose_inversions(*r.mesh);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -25,6 +25,7 @@
 #include "src/closure/database.hpp"
 #include "src/closure/shelling_search.hpp"
 #include "src/geometry/boundary_layer.hpp"
+#include "src/geometry/inversion_causes.hpp"
 #include "src/mesh/hex_mesh.hpp"
 #include "src/mesh/quad_surface.hpp"
 #include "src/pipeline/cavity_closure.hpp"
@@ -85,6 +86,12 @@ struct MeshingResult {
   ClosureReport closure;                 ///< of the cavity closure, when it ran
   std::string closure_failure;           ///< why it gave no mesh, when it ran and did not
   std::string fill_failure;              ///< why the whole-surface fill could not run
+  /// Why the wide search stopped before its budget ("" when it did not run or
+  /// ran to its end): the run keeps the mesh it had.
+  std::string wide_search_stopped;
+  /// Of `mesh` as returned: why each inverted hex is (once, for the warning
+  /// line, the report and the cell field).
+  geometry::InversionDiagnosis inversions;
   double seconds = 0;                    ///< of everything
   std::size_t attempts = 1;              ///< weaves run
   engine::Strategy strategy;             ///< of the last attempt, the one reported
