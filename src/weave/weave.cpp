@@ -10,6 +10,7 @@
 #include "engine/strategy_run.hpp"
 #include "src/weave/improper.hpp"
 #include "src/weave/pillow.hpp"
+#include "src/weave/remove_hex.hpp"
 
 namespace loom::weave {
 
@@ -104,6 +105,10 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // would meet h2 in three nodes).
   actions.add("pillow_doublet", {{"h1", hex}, {"h2", hex}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     insert_pillow(stc, doublet_shrink_set(stc, args[0], args[1]));
+  });
+  // remove_hex(h): h taken off again, the inverse of gluing it on (remove_hex.hpp).
+  actions.add("remove_hex", {{"h", hex}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
+    remove_hex(stc, args[0]);
   });
   // split_pinched(n): one node per group of n's hexes that meet only at n;
   // each part's boundary flag is 1 exactly when it holds a boundary face.
