@@ -10,8 +10,9 @@ the even wall in two quads (chord from the black top to the white bottom), the
 three odd walls in three quads round a centre. The inner diagonal joins the
 black corners a and c (surface validation refuses two quads sharing a diagonal,
 so any fixed choice is safe). This script writes that boundary for the even
-wall on cd, weaves it with build/loom (random strategies, the first attempt
-that closes), and writes four caps: the woven one and its images under the
+wall on cd, meshes it with build/loom (the weave and the closure's search,
+which finds it in the database; the boundary layer loom adds for placement is
+peeled off again), and writes four caps: that one and its images under the
 symmetries of the square that keep the colours (a half turn, the two diagonal
 mirrors). Usage: scripts/make-caps.py [WORKDIR]  (run from the source tree)
 """
@@ -77,13 +78,33 @@ def write_obj(path, pos, faces):
         for f in faces: o.write('f ' + ' '.join(str(index[n]) for n in f) + '\n')
 
 
+PILLOW = 4  # the cell field `source` of a pillow hex (docs/formats.md)
+
+
 def read_vtk(path):
+    """Points, hexes, and each hex's `source` cell field."""
     words = open(path).read().split('\n')
     i = next(k for k, l in enumerate(words) if l.startswith('POINTS'))
     points = [tuple(map(float, words[i + 1 + k].split())) for k in range(int(words[i].split()[1]))]
     i = next(k for k, l in enumerate(words) if l.startswith('CELLS'))
     hexes = [list(map(int, words[i + 1 + k].split()[1:])) for k in range(int(words[i].split()[1]))]
-    return points, hexes
+    i = next(k for k, l in enumerate(words) if l.startswith('SCALARS source'))
+    source = [int(words[i + 2 + k]) for k in range(len(hexes))]
+    return points, hexes, source
+
+
+def peel_layer(hexes, source, on_surface):
+    """The mesh inside the boundary layer loom weave pillowed in (its pillow
+    hexes, each a surface quad and its copy joined by the edges k, k+4), with
+    each copied node put back on the surface node it copies."""
+    back = {}
+    for h, s in zip(hexes, source):
+        if s != PILLOW: continue
+        for k in range(4):
+            outer, inner = (h[k], h[k + 4]) if on_surface(h[k]) else (h[k + 4], h[k])
+            assert on_surface(outer) and not on_surface(inner), 'a pillow hex not on the surface'
+            assert back.setdefault(inner, outer) == outer, 'a node copied twice'
+    return [[back.get(v, v) for v in h] for h, s in zip(hexes, source) if s != PILLOW]
 
 
 HEX_FACES = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
@@ -125,11 +146,19 @@ def make(diagonal, even, work, out_dir, loom):
     stem = os.path.join(work, 'cap_%s' % diagonal)
     write_obj(stem + '.obj', pos, faces)
     if os.path.exists(stem + '.vtk'): os.remove(stem + '.vtk')
-    status = subprocess.run([loom, 'weave', stem + '.obj', '-o', stem + '.vtk', '--attempts', '64', '--no-fill', '-q']).returncode
+    # The whole of loom weave, closure included: the search finds the cap's
+    # boundary in the database (36 hexes). The whole-surface fill is off: it
+    # would need these caps.
+    status = subprocess.run([loom, 'weave', stem + '.obj', '-o', stem + '.vtk', '--closure', 'search', '-q']).returncode
     if status not in (0, 3):  # 3: geometry not achieved, which is fine: only the connectivity is kept
         sys.exit('make-caps: loom weave gave no cap (status %d)' % status)
-    points, hexes = read_vtk(stem + '.vtk')
+    points, hexes, source = read_vtk(stem + '.vtk')
     by_position = {tuple(round(x, 6) for x in p): n for n, p in pos.items()}
+    hexes = peel_layer(hexes, source, lambda v: tuple(round(x, 6) for x in points[v]) in by_position)
+    used = sorted({v for h in hexes for v in h})
+    renumber = {v: k for k, v in enumerate(used)}
+    points = [points[v] for v in used]
+    hexes = [[renumber[v] for v in h] for h in hexes]
     names, inside = [], {}
     for p in points:
         n = by_position.get(tuple(round(x, 6) for x in p))
@@ -148,7 +177,7 @@ def make(diagonal, even, work, out_dir, loom):
         assert {frozenset(f) for f in boundary_faces(mapped)} == {frozenset(f) for f in expected}, what
         with open(os.path.join(out_dir, 'cap_even_%s.cap' % e), 'w') as o:
             o.write('# Cap over one quad: even wall %s, inner diagonal %s, %d hexes (docs/fill.md).\n' % (e, diagonal, len(mapped)))
-            o.write('# Written by scripts/make-caps.py: %s of the cap with even wall %s woven by loom weave.\n' % (what, EDGES[even]))
+            o.write('# Written by scripts/make-caps.py: %s of the cap with even wall %s meshed by loom weave.\n' % (what, EDGES[even]))
             o.write('even %s\n' % e)
             for n, p in inside.items():
                 x, y = place(p[0], p[1])

@@ -66,6 +66,9 @@ TEST_CASE("fill: criteria 1-6 hold on block shapes, spheres and random quadrangu
     CHECK_MESSAGE(check.combinatorial_valid(), (failed ? failed->detail : std::string()));
     CHECK(m.core_hexes == 8 * surface.quads.size());  // two tets a quad, four hexes a tet
     CHECK(m.cap_hexes + m.core_hexes == m.mesh.hexes.size());
+    // The published bound (Verhetsel, Pellerin & Remacle 2019): a cap of 36,
+    // its pillow of 18, half its pair's pillow of 32 and 8 core hexes a quad.
+    CHECK(m.mesh.hexes.size() == 78 * surface.quads.size());
     for (std::size_t v = 0; v < m.on_boundary.size(); ++v) CHECK(m.on_boundary[v] == (v < surface.points.size()));
   }
 }
