@@ -1,4 +1,5 @@
-// Criterion 7 and the scaled Jacobian itself (Verdict's corner form).
+// Criterion 7 and the scaled Jacobian itself (Verdict's corner form), and the
+// centre Verdict also tests, reported beside it.
 #include <algorithm>
 #include <cmath>
 
@@ -41,6 +42,19 @@ double corner_scaled_jacobian(const HexMesh& mesh, std::size_t hex, int corner) 
   return std::isfinite(value) ? value : -1.0;
 }
 
+double centre_scaled_jacobian(const HexMesh& mesh, std::size_t hex) {
+  const Hex& n = mesh.hexes[hex];
+  for (std::uint32_t v : n)
+    if (v >= mesh.points.size()) return -1.0;
+  auto p = [&](int i) { return mesh.points[n[static_cast<std::size_t>(i)]]; };
+  Vec3 xi = p(1) - p(0) + p(2) - p(3) + p(5) - p(4) + p(6) - p(7);
+  Vec3 eta = p(3) - p(0) + p(2) - p(1) + p(7) - p(4) + p(6) - p(5);
+  Vec3 zeta = p(4) - p(0) + p(5) - p(1) + p(6) - p(2) + p(7) - p(3);
+  if (!normalize(xi) || !normalize(eta) || !normalize(zeta)) return -1.0;
+  const double value = dot(xi, cross(eta, zeta));
+  return std::isfinite(value) ? value : -1.0;
+}
+
 double scaled_jacobian(const HexMesh& mesh, std::size_t hex) {
   double worst = 1.0;
   for (int corner = 0; corner < 8; ++corner) worst = std::min(worst, corner_scaled_jacobian(mesh, hex, corner));
@@ -55,12 +69,15 @@ CriterionResult positive_scaled_jacobian(const HexMesh& mesh, QualitySummary& qu
   double sum = 0;
   std::size_t first_bad = mesh.hexes.size();
   double first_bad_value = 0;
-  quality.min_scaled_jacobian = 1.0;
+  quality.min_scaled_jacobian = quality.min_verdict_scaled_jacobian = 1.0;
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
     const double sj = scaled_jacobian(mesh, h);
     sum += sj;
     quality.min_scaled_jacobian = std::min(quality.min_scaled_jacobian, sj);
     if (sj < 0.2) ++quality.below_0_2;
+    const double verdict = std::min(sj, centre_scaled_jacobian(mesh, h));
+    quality.min_verdict_scaled_jacobian = std::min(quality.min_verdict_scaled_jacobian, verdict);
+    quality.verdict_below_zero += verdict <= 0;
     if (sj <= 0) {
       if (quality.below_zero++ == 0) {
         first_bad = h;

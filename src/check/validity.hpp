@@ -26,6 +26,10 @@ struct QualitySummary {
   double min_scaled_jacobian = 0, mean_scaled_jacobian = 0;
   std::size_t below_zero = 0;  ///< elements with scaled Jacobian <= 0
   std::size_t below_0_2 = 0;   ///< elements with scaled Jacobian < 0.2
+  /// The same with the centre too, as Verdict (ParaView's Mesh Quality)
+  /// measures: a twisted hex can have every corner positive and its centre not.
+  double min_verdict_scaled_jacobian = 0;
+  std::size_t verdict_below_zero = 0;
 };
 
 struct ValidityReport {
@@ -44,14 +48,21 @@ struct ValidityReport {
 /// "Euler characteristic", "boundary matches surface", "positive scaled Jacobian".
 std::string criterion_name(int number);
 
-/// Scaled Jacobian of one hex: minimum over the 8 corners (Verdict's corner
-/// edge triples, VTK order) of det[e1,e2,e3]/(|e1||e2||e3|), computed on unit
-/// edge vectors so that it does not depend on the scale; -1 for a corner
-/// with a zero-length or non-finite edge, and for a hex with a node out of range.
+/// Scaled Jacobian of one hex (criterion 7): minimum over the 8 corners
+/// (Verdict's corner edge triples, VTK order) of det[e1,e2,e3]/(|e1||e2||e3|),
+/// computed on unit edge vectors so that it does not depend on the scale; -1
+/// for a corner with a zero-length or non-finite edge, and for a hex with a
+/// node out of range. Verdict's hex_scaled_jacobian also tests the centre
+/// (centre_scaled_jacobian; QualitySummary reports both).
 double scaled_jacobian(const HexMesh& mesh, std::size_t hex);
 
 /// The same at one corner (0..7, VTK order) of a hex.
 double corner_scaled_jacobian(const HexMesh& mesh, std::size_t hex, int corner);
+
+/// The same at the centre, from the principal axes p1 - p0 + p2 - p3 + p5 -
+/// p4 + p6 - p7 and the like (Verdict's): <= 0 on a twisted hex whose corners
+/// may all be positive.
+double centre_scaled_jacobian(const HexMesh& mesh, std::size_t hex);
 
 /// The three corners joined to `corner` by an edge of the hex, in the order
 /// whose edge vectors span a positive corner.

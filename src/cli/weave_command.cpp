@@ -15,6 +15,7 @@
 #include "engine/rule_parser.hpp"
 #include "src/check/quality_histogram.hpp"
 #include "src/check/validity.hpp"
+#include "src/check/verdict.hpp"
 #include "src/cli/weave_report.hpp"
 #include "src/geometry/inversion_causes.hpp"
 #include "src/io/hex_io.hpp"
@@ -239,6 +240,8 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
     std::cerr << fmt::format("loom: note: the wide search (for a mesh within 72 hexes) stopped: {}; the mesh found "
                              "before it is written; raise --max-memory to let it finish\n",
                              result.wide_search_stopped);
+  if (const std::string note = loom::centre_note(q); !note.empty())
+    std::cerr << "loom: warning: criterion 7 holds" << note << "\n";
   if (q.below_zero > 0) {
     std::cerr << fmt::format("loom: warning: {} hexes have a scaled Jacobian <= 0 (minimum {:.3f}): {}; the cell "
                              "field inversion_cause names them; the mesh is written for its connectivity\n",

@@ -59,6 +59,8 @@ nlohmann::json report_json(const std::string& input, const pipeline::MeshingResu
     j["mean_scaled_jacobian"] = r.check->quality.mean_scaled_jacobian;
     j["below_zero"] = r.check->quality.below_zero;
     j["below_0_2"] = r.check->quality.below_0_2;
+    j["verdict_min_scaled_jacobian"] = r.check->quality.min_verdict_scaled_jacobian;
+    j["verdict_below_zero"] = r.check->quality.verdict_below_zero;
     j["scaled_jacobian_histogram"] = histogram_json(quality_histogram(*r.mesh));
     nlohmann::json causes;
     for (auto c : {geometry::InversionCause::locked_corner, geometry::InversionCause::crowded_edge,

@@ -19,7 +19,9 @@ Summary Placer::summarise() const {
   if (mesh_.hexes.empty()) return s;
   double sum = 0;
   for (std::size_t h = 0; h < mesh_.hexes.size(); ++h) {
-    const double q = scaled_jacobian(mesh_, h);
+    // The centre too (Verdict's measure): a twisted hex with every corner
+    // positive is still tangled, and only the global untangler sees centres.
+    const double q = std::min(scaled_jacobian(mesh_, h), centre_scaled_jacobian(mesh_, h));
     s.min = std::min(s.min, q);
     sum += q;
     if (q <= 0) ++s.below_zero;

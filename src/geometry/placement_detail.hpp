@@ -45,7 +45,8 @@ struct Entry {
   std::int8_t col;
 };
 
-/// Quality summary, in the order the placement is judged by.
+/// Quality summary, in the order the placement is judged by, with Verdict's
+/// measure (corners and centre; placement.cpp).
 struct Summary {
   double min = 1, mean = 1;
   std::size_t below_zero = 0, below_0_2 = 0;

@@ -1,6 +1,7 @@
 #include "src/geometry/untangle.hpp"
 
 #include <algorithm>
+#include <array>
 #include <new>
 #include <chrono>
 #include <cmath>
@@ -23,11 +24,33 @@ using Vector = Eigen::VectorXd;
 /// Below this the regularised terms of inverted corners overflow doubles.
 constexpr double kLeastEps = 1e-8;
 
-/// A hex corner: its node, then the ends of its three edges, right-handed.
-struct Corner {
-  std::uint32_t node[4];
+/// A Jacobian frame of a hex, J = [a b d] with each column a weighted sum of
+/// the hex's nodes: a corner (its node, then the ends of its three edges,
+/// right-handed: a = p1 - p0 ...) or the centre (Verdict's principal axes over
+/// four: a = (p1 - p0 + p2 - p3 + p5 - p4 + p6 - p7) / 4 ..., the frame a
+/// twisted hex can invert with every corner positive).
+struct Frame {
+  std::uint32_t node[8];
   std::uint32_t hex;
+  bool centre;
+  int nodes() const { return centre ? 8 : 4; }
 };
+
+/// Per node of a frame, its weight in a, b and d.
+constexpr double kCornerWeight[4][3] = {{-1, -1, -1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+constexpr double kCentreWeight[8][3] = {{-.25, -.25, -.25}, {.25, -.25, -.25}, {.25, .25, -.25}, {-.25, .25, -.25},
+                                        {-.25, -.25, .25},  {.25, -.25, .25},  {.25, .25, .25},  {-.25, .25, .25}};
+const double* weight(const Frame& f, int i) { return f.centre ? kCentreWeight[i] : kCornerWeight[i]; }
+
+/// The nine frames of hex h: its eight corners, then its centre.
+std::array<Frame, 9> frames_of(const HexMesh& mesh, std::uint32_t h) {
+  std::array<Frame, 9> out{};
+  const Hex& n = mesh.hexes[h];
+  for (int k = 0; k < 8; ++k)
+    out[k] = {{n[k], n[kCornerEdges[k][0]], n[kCornerEdges[k][1]], n[kCornerEdges[k][2]]}, h, false};
+  out[8] = {{n[0], n[1], n[2], n[3], n[4], n[5], n[6], n[7]}, h, true};
+  return out;
+}
 
 /// The energy of the free nodes' coordinates, for one eps.
 class Energy {
@@ -39,16 +62,14 @@ public:
     double length = 0;
     std::size_t edges = 0;
     for (std::uint32_t h = 0; h < mesh.hexes.size(); ++h)
-      for (int k = 0; k < 8; ++k) {
-        Corner c{{mesh.hexes[h][k], mesh.hexes[h][kCornerEdges[k][0]], mesh.hexes[h][kCornerEdges[k][1]],
-                  mesh.hexes[h][kCornerEdges[k][2]]},
-                 h};
-        for (int e = 1; e < 4; ++e, ++edges) length += (point(c.node[e]) - point(c.node[0])).norm();
-        if (std::any_of(std::begin(c.node), std::end(c.node), [&](std::uint32_t n) { return variable_[n] >= 0; }))
-          corners_.push_back(c);
+      for (const Frame& f : frames_of(mesh, h)) {
+        if (!f.centre)
+          for (int e = 1; e < 4; ++e, ++edges) length += (point(f.node[e]) - point(f.node[0])).norm();
+        if (std::any_of(f.node, f.node + f.nodes(), [&](std::uint32_t n) { return variable_[n] >= 0; }))
+          frames_.push_back(f);
       }
     // One reference length for the whole mesh: the volume term asks every
-    // corner for the volume of a cube corner of that edge.
+    // frame for the volume of a cube corner of that edge.
     h_ = edges ? length / static_cast<double>(edges) : 1.0;
   }
 
@@ -71,9 +92,8 @@ public:
     grad.setZero(x.size());
     double total = 0;
     const double inv_h = 1 / h_, inv_h2 = inv_h * inv_h, inv_h3 = inv_h2 * inv_h;
-    for (const Corner& c : corners_) {
-      const V3 p0 = at(x, c.node[0]);
-      const V3 a = at(x, c.node[1]) - p0, b = at(x, c.node[2]) - p0, d = at(x, c.node[3]) - p0;
+    for (const Frame& f : frames_) {
+      const auto [a, b, d] = columns(x, f);
       const V3 bd = b.cross(d), da = d.cross(a), ab = a.cross(b);
       const double det = a.dot(bd) * inv_h3, trace = (a.squaredNorm() + b.squaredNorm() + d.squaredNorm()) * inv_h2;
       const double root = std::sqrt(eps * eps + det * det), chi = 0.5 * (det + root), dchi = chi / root;
@@ -85,32 +105,29 @@ public:
       const V3 ga = 2 * d_trace * inv_h2 * a + d_det * inv_h3 * bd;
       const V3 gb = 2 * d_trace * inv_h2 * b + d_det * inv_h3 * da;
       const V3 gd = 2 * d_trace * inv_h2 * d + d_det * inv_h3 * ab;
-      add(grad, c.node[1], ga);
-      add(grad, c.node[2], gb);
-      add(grad, c.node[3], gd);
-      add(grad, c.node[0], -(ga + gb + gd));
+      for (int i = 0; i < f.nodes(); ++i) {
+        const double* w = weight(f, i);
+        add(grad, f.node[i], w[0] * ga + w[1] * gb + w[2] * gd);
+      }
     }
     return total;
   }
 
-  /// The least corner determinant (over h^3) of the corners with a free node.
+  /// The least frame determinant (over h^3) of the frames with a free node.
   double min_det(const Vector& x) const {
     double least = detail::kInf;
-    for (const Corner& c : corners_) least = std::min(least, det(x, c));
+    for (const Frame& f : frames_) least = std::min(least, det(x, f));
     return least;
   }
 
-  /// Hexes with a corner whose determinant is <= 0 (locked corners included).
+  /// Hexes with a frame whose determinant is <= 0 (locked ones included).
   std::size_t inverted_hexes(const Vector& x) const {
-    std::vector<bool> inverted(mesh_.hexes.size(), false);
-    for (std::uint32_t h = 0; h < mesh_.hexes.size(); ++h)
-      for (int k = 0; k < 8 && !inverted[h]; ++k) {
-        Corner c{{mesh_.hexes[h][k], mesh_.hexes[h][kCornerEdges[k][0]], mesh_.hexes[h][kCornerEdges[k][1]],
-                  mesh_.hexes[h][kCornerEdges[k][2]]},
-                 h};
-        inverted[h] = !(det(x, c) > 0);
-      }
-    return static_cast<std::size_t>(std::count(inverted.begin(), inverted.end(), true));
+    std::size_t inverted = 0;
+    for (std::uint32_t h = 0; h < mesh_.hexes.size(); ++h) {
+      const auto frames = frames_of(mesh_, h);
+      inverted += std::any_of(frames.begin(), frames.end(), [&](const Frame& f) { return !(det(x, f) > 0); });
+    }
+    return inverted;
   }
 
   double chi(double det) const { return 0.5 * (det + std::sqrt(eps * eps + det * det)); }
@@ -123,9 +140,17 @@ private:
   void add(Vector& grad, std::uint32_t n, const V3& g) const {
     if (variable_[n] >= 0) grad.segment<3>(3 * variable_[n]) += g;
   }
-  double det(const Vector& x, const Corner& c) const {
-    const V3 p0 = at(x, c.node[0]);
-    const V3 a = at(x, c.node[1]) - p0, b = at(x, c.node[2]) - p0, d = at(x, c.node[3]) - p0;
+  std::array<V3, 3> columns(const Vector& x, const Frame& f) const {
+    std::array<V3, 3> c{V3::Zero(), V3::Zero(), V3::Zero()};
+    for (int i = 0; i < f.nodes(); ++i) {
+      const V3 p = at(x, f.node[i]);
+      const double* w = weight(f, i);
+      for (int k = 0; k < 3; ++k) c[k] += w[k] * p;
+    }
+    return c;
+  }
+  double det(const Vector& x, const Frame& f) const {
+    const auto [a, b, d] = columns(x, f);
     return a.dot(b.cross(d)) / (h_ * h_ * h_);
   }
 
@@ -133,7 +158,7 @@ private:
   double lambda_;
   std::vector<std::int64_t> variable_;  ///< per node: index among the free nodes, -1 when fixed
   std::size_t free_ = 0;
-  std::vector<Corner> corners_;
+  std::vector<Frame> frames_;
   double h_ = 1;
 };
 
