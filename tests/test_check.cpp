@@ -85,6 +85,30 @@ TEST_CASE("scaled Jacobian: cube 1, shear 1/sqrt(1+s^2), degenerate -1") {
   CHECK(scaled_jacobian(m, 0) == -1.0);
 }
 
+TEST_CASE("a twisted hex: every corner positive, its centre not; criterion 7 holds and the centre is reported") {
+  // One hex of quadrangulation 12 4 as placed before the untangler saw centres.
+  HexMesh m;
+  m.points = {{0.329, 0.577, 0.126}, {0.529, 0.499, 0.198}, {0.399, 0.0, 0.379}, {0.696, 0.776, 0.0},
+              {0.3, 0.594, 0.148},   {1.0, 0.48, 0.208},   {0.434, 0.177, 0.337}, {0.0, 0.758, 0.288}};
+  m.hexes = {{0, 1, 2, 3, 4, 5, 6, 7}};
+  CHECK(scaled_jacobian(m, 0) == doctest::Approx(0.0055).epsilon(0.05));
+  CHECK(centre_scaled_jacobian(m, 0) == doctest::Approx(-0.716).epsilon(0.01));
+  const ValidityReport r = check_hex_mesh(m);
+  CHECK(r.criteria.back().passed);
+  CHECK(r.quality.below_zero == 0);
+  CHECK(r.quality.verdict_below_zero == 1);
+  CHECK(r.quality.min_verdict_scaled_jacobian == doctest::Approx(-0.716).epsilon(0.01));
+  CHECK_MESSAGE(verdict_line(r).find("; but 1 hex with every corner positive has a centre Jacobian <= 0") !=
+                    std::string::npos,
+                verdict_line(r));
+  // On a cube and a sheared one the centre is no worse than the corners.
+  HexMesh cube = gen::hexgrid(1, 1, 1);
+  CHECK(centre_scaled_jacobian(cube, 0) == 1.0);
+  for (int top = 4; top < 8; ++top) cube.points[cube.hexes[0][top]][0] += 1.0;
+  CHECK(centre_scaled_jacobian(cube, 0) == doctest::Approx(1 / std::sqrt(2.0)));
+  CHECK(check_hex_mesh(cube).quality.verdict_below_zero == 0);
+}
+
 TEST_CASE("scaled Jacobian does not depend on the scale: 1e-300 and 1e300 give the values of scale 1") {
   HexMesh unit = gen::hexgrid(2, 2, 2);
   unit.points[13] = {1.3, 0.8, 1.1};  // the middle node, off centre: eight different values

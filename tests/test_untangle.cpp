@@ -1,5 +1,5 @@
 // Global untangling (src/geometry/untangle.hpp): all free nodes moved at once
-// until no hex corner with a free node is inverted; fixed nodes never move.
+// until no hex corner or centre with a free node is inverted; fixed nodes never move.
 #include <doctest/doctest.h>
 
 #include <random>
@@ -63,6 +63,21 @@ TEST_CASE("nothing to untangle leaves the mesh bit-identical; a wrong fixed vect
   CHECK(mesh.points == before.points);
   fixed.pop_back();
   CHECK_THROWS_AS(geometry::untangle(mesh, fixed), std::invalid_argument);
+}
+
+TEST_CASE("the untangler sees a hex's centre: a twisted hex with every corner positive is untwisted") {
+  HexMesh mesh;
+  mesh.points = {{0.329, 0.577, 0.126}, {0.529, 0.499, 0.198}, {0.399, 0.0, 0.379}, {0.696, 0.776, 0.0},
+                 {0.3, 0.594, 0.148},   {1.0, 0.48, 0.208},   {0.434, 0.177, 0.337}, {0.0, 0.758, 0.288}};
+  mesh.hexes = {{0, 1, 2, 3, 4, 5, 6, 7}};
+  REQUIRE(scaled_jacobian(mesh, 0) > 0);
+  REQUIRE(centre_scaled_jacobian(mesh, 0) < 0);
+  const std::vector<bool> fixed(8, false);
+  const geometry::UntangleReport r = geometry::untangle(mesh, fixed);
+  CHECK(r.inverted_before == 1);
+  CHECK(r.inverted_after == 0);
+  CHECK(centre_scaled_jacobian(mesh, 0) > 0);
+  CHECK(scaled_jacobian(mesh, 0) > 0);
 }
 
 TEST_CASE("Schneiders' pyramid comes out of loom weave's pipeline with every scaled Jacobian positive") {
