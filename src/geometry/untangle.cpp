@@ -36,11 +36,10 @@ struct Frame {
   int nodes() const { return centre ? 8 : 4; }
 };
 
-/// Per node of a frame, its weight in a, b and d.
-constexpr double kCornerWeight[4][3] = {{-1, -1, -1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+/// Per node of the centre frame, its weight in a, b and d (a corner's are
+/// -1 for its node and 1 for the end of its own edge).
 constexpr double kCentreWeight[8][3] = {{-.25, -.25, -.25}, {.25, -.25, -.25}, {.25, .25, -.25}, {-.25, .25, -.25},
                                         {-.25, -.25, .25},  {.25, -.25, .25},  {.25, .25, .25},  {-.25, .25, .25}};
-const double* weight(const Frame& f, int i) { return f.centre ? kCentreWeight[i] : kCornerWeight[i]; }
 
 /// The nine frames of hex h: its eight corners, then its centre.
 std::array<Frame, 9> frames_of(const HexMesh& mesh, std::uint32_t h) {
@@ -105,8 +104,15 @@ public:
       const V3 ga = 2 * d_trace * inv_h2 * a + d_det * inv_h3 * bd;
       const V3 gb = 2 * d_trace * inv_h2 * b + d_det * inv_h3 * da;
       const V3 gd = 2 * d_trace * inv_h2 * d + d_det * inv_h3 * ab;
-      for (int i = 0; i < f.nodes(); ++i) {
-        const double* w = weight(f, i);
+      if (!f.centre) {  // the common case, without the weights
+        add(grad, f.node[1], ga);
+        add(grad, f.node[2], gb);
+        add(grad, f.node[3], gd);
+        add(grad, f.node[0], -(ga + gb + gd));
+        continue;
+      }
+      for (int i = 0; i < 8; ++i) {
+        const double* w = kCentreWeight[i];
         add(grad, f.node[i], w[0] * ga + w[1] * gb + w[2] * gd);
       }
     }
@@ -141,11 +147,14 @@ private:
     if (variable_[n] >= 0) grad.segment<3>(3 * variable_[n]) += g;
   }
   std::array<V3, 3> columns(const Vector& x, const Frame& f) const {
+    if (!f.centre) {
+      const V3 p0 = at(x, f.node[0]);
+      return {at(x, f.node[1]) - p0, at(x, f.node[2]) - p0, at(x, f.node[3]) - p0};
+    }
     std::array<V3, 3> c{V3::Zero(), V3::Zero(), V3::Zero()};
-    for (int i = 0; i < f.nodes(); ++i) {
+    for (int i = 0; i < 8; ++i) {
       const V3 p = at(x, f.node[i]);
-      const double* w = weight(f, i);
-      for (int k = 0; k < 3; ++k) c[k] += w[k] * p;
+      for (int k = 0; k < 3; ++k) c[k] += kCentreWeight[i][k] * p;
     }
     return c;
   }
