@@ -24,32 +24,17 @@ using Vector = Eigen::VectorXd;
 /// Below this the regularised terms of inverted corners overflow doubles.
 constexpr double kLeastEps = 1e-8;
 
-/// A Jacobian frame of a hex, J = [a b d] with each column a weighted sum of
-/// the hex's nodes: a corner (its node, then the ends of its three edges,
-/// right-handed: a = p1 - p0 ...) or the centre (Verdict's principal axes over
-/// four: a = (p1 - p0 + p2 - p3 + p5 - p4 + p6 - p7) / 4 ..., the frame a
-/// twisted hex can invert with every corner positive).
+/// A Jacobian frame of a hex, J = [a b d]: corner k = 0..7 (its node, then
+/// the ends of its three edges, right-handed: a = p1 - p0 ...) or kCentre
+/// (Verdict's principal axes over four: a = (p1 - p0 + p2 - p3 + p5 - p4 + p6 -
+/// p7) / 4 ..., which a twisted hex can invert with every corner positive).
+/// Eight bytes: the nodes are read from the hex.
 struct Frame {
-  std::uint32_t node[8];
   std::uint32_t hex;
-  bool centre;
-  int nodes() const { return centre ? 8 : 4; }
+  std::uint8_t which;
 };
-
-/// Per node of the centre frame, its weight in a, b and d (a corner's are
-/// -1 for its node and 1 for the end of its own edge).
-constexpr double kCentreWeight[8][3] = {{-.25, -.25, -.25}, {.25, -.25, -.25}, {.25, .25, -.25}, {-.25, .25, -.25},
-                                        {-.25, -.25, .25},  {.25, -.25, .25},  {.25, .25, .25},  {-.25, .25, .25}};
-
-/// The nine frames of hex h: its eight corners, then its centre.
-std::array<Frame, 9> frames_of(const HexMesh& mesh, std::uint32_t h) {
-  std::array<Frame, 9> out{};
-  const Hex& n = mesh.hexes[h];
-  for (int k = 0; k < 8; ++k)
-    out[k] = {{n[k], n[kCornerEdges[k][0]], n[kCornerEdges[k][1]], n[kCornerEdges[k][2]]}, h, false};
-  out[8] = {{n[0], n[1], n[2], n[3], n[4], n[5], n[6], n[7]}, h, true};
-  return out;
-}
+constexpr std::uint8_t kCentre = 8;
+constexpr std::uint8_t kFrames = 9;
 
 /// The energy of the free nodes' coordinates, for one eps.
 class Energy {
@@ -60,13 +45,16 @@ public:
       if (!fixed[i]) variable_[i] = static_cast<std::int64_t>(free_++);
     double length = 0;
     std::size_t edges = 0;
-    for (std::uint32_t h = 0; h < mesh.hexes.size(); ++h)
-      for (const Frame& f : frames_of(mesh, h)) {
-        if (!f.centre)
-          for (int e = 1; e < 4; ++e, ++edges) length += (point(f.node[e]) - point(f.node[0])).norm();
-        if (std::any_of(f.node, f.node + f.nodes(), [&](std::uint32_t n) { return variable_[n] >= 0; }))
-          frames_.push_back(f);
+    auto free = [&](std::uint32_t node) { return variable_[node] >= 0; };
+    for (std::uint32_t h = 0; h < mesh.hexes.size(); ++h) {
+      const Hex& n = mesh.hexes[h];
+      for (std::uint8_t k = 0; k < 8; ++k) {
+        const int* e = kCornerEdges[k];
+        for (int i = 0; i < 3; ++i, ++edges) length += (point(n[e[i]]) - point(n[k])).norm();
+        if (free(n[k]) || free(n[e[0]]) || free(n[e[1]]) || free(n[e[2]])) frames_.push_back({h, k});
       }
+      if (std::any_of(n.begin(), n.end(), free)) frames_.push_back({h, kCentre});
+    }
     // One reference length for the whole mesh: the volume term asks every
     // frame for the volume of a cube corner of that edge.
     h_ = edges ? length / static_cast<double>(edges) : 1.0;
@@ -104,17 +92,25 @@ public:
       const V3 ga = 2 * d_trace * inv_h2 * a + d_det * inv_h3 * bd;
       const V3 gb = 2 * d_trace * inv_h2 * b + d_det * inv_h3 * da;
       const V3 gd = 2 * d_trace * inv_h2 * d + d_det * inv_h3 * ab;
-      if (!f.centre) {  // the common case, without the weights
-        add(grad, f.node[1], ga);
-        add(grad, f.node[2], gb);
-        add(grad, f.node[3], gd);
-        add(grad, f.node[0], -(ga + gb + gd));
+      const Hex& n = mesh_.hexes[f.hex];
+      if (f.which != kCentre) {
+        const int* e = kCornerEdges[f.which];
+        add(grad, n[e[0]], ga);
+        add(grad, n[e[1]], gb);
+        add(grad, n[e[2]], gd);
+        add(grad, n[f.which], -(ga + gb + gd));
         continue;
       }
-      for (int i = 0; i < 8; ++i) {
-        const double* w = kCentreWeight[i];
-        add(grad, f.node[i], w[0] * ga + w[1] * gb + w[2] * gd);
-      }
+      // Node i's weight in each column is +-1/4 (the signs in columns()).
+      const V3 s = 0.25 * (ga + gb + gd), ad = 0.5 * (ga + gd), bd_ = 0.5 * (gb + gd);
+      add(grad, n[0], -s);
+      add(grad, n[1], s - bd_);
+      add(grad, n[2], s - 0.5 * gd);
+      add(grad, n[3], s - ad);
+      add(grad, n[4], 0.5 * gd - s);
+      add(grad, n[5], ad - s);
+      add(grad, n[6], s);
+      add(grad, n[7], bd_ - s);
     }
     return total;
   }
@@ -129,10 +125,12 @@ public:
   /// Hexes with a frame whose determinant is <= 0 (locked ones included).
   std::size_t inverted_hexes(const Vector& x) const {
     std::size_t inverted = 0;
-    for (std::uint32_t h = 0; h < mesh_.hexes.size(); ++h) {
-      const auto frames = frames_of(mesh_, h);
-      inverted += std::any_of(frames.begin(), frames.end(), [&](const Frame& f) { return !(det(x, f) > 0); });
-    }
+    for (std::uint32_t h = 0; h < mesh_.hexes.size(); ++h)
+      for (std::uint8_t w = 0; w < kFrames; ++w)
+        if (!(det(x, {h, w}) > 0)) {
+          ++inverted;
+          break;
+        }
     return inverted;
   }
 
@@ -147,16 +145,17 @@ private:
     if (variable_[n] >= 0) grad.segment<3>(3 * variable_[n]) += g;
   }
   std::array<V3, 3> columns(const Vector& x, const Frame& f) const {
-    if (!f.centre) {
-      const V3 p0 = at(x, f.node[0]);
-      return {at(x, f.node[1]) - p0, at(x, f.node[2]) - p0, at(x, f.node[3]) - p0};
+    const Hex& n = mesh_.hexes[f.hex];
+    if (f.which != kCentre) {
+      const int* e = kCornerEdges[f.which];
+      const V3 p0 = at(x, n[f.which]);
+      return {at(x, n[e[0]]) - p0, at(x, n[e[1]]) - p0, at(x, n[e[2]]) - p0};
     }
-    std::array<V3, 3> c{V3::Zero(), V3::Zero(), V3::Zero()};
-    for (int i = 0; i < 8; ++i) {
-      const V3 p = at(x, f.node[i]);
-      for (int k = 0; k < 3; ++k) c[k] += kCentreWeight[i][k] * p;
-    }
-    return c;
+    V3 p[8];
+    for (int i = 0; i < 8; ++i) p[i] = at(x, n[i]);
+    return {0.25 * (p[1] - p[0] + p[2] - p[3] + p[5] - p[4] + p[6] - p[7]),
+            0.25 * (p[3] - p[0] + p[2] - p[1] + p[7] - p[4] + p[6] - p[5]),
+            0.25 * (p[4] - p[0] + p[5] - p[1] + p[6] - p[2] + p[7] - p[3])};
   }
   double det(const Vector& x, const Frame& f) const {
     const auto [a, b, d] = columns(x, f);
