@@ -45,15 +45,15 @@ public:
       if (!fixed[i]) variable_[i] = static_cast<std::int64_t>(free_++);
     double length = 0;
     std::size_t edges = 0;
-    auto free = [&](std::uint32_t node) { return variable_[node] >= 0; };
+    auto is_free = [&](std::uint32_t node) { return variable_[node] >= 0; };
     for (std::uint32_t h = 0; h < mesh.hexes.size(); ++h) {
       const Hex& n = mesh.hexes[h];
       for (std::uint8_t k = 0; k < 8; ++k) {
         const int* e = kCornerEdges[k];
         for (int i = 0; i < 3; ++i, ++edges) length += (point(n[e[i]]) - point(n[k])).norm();
-        if (free(n[k]) || free(n[e[0]]) || free(n[e[1]]) || free(n[e[2]])) frames_.push_back({h, k});
+        if (is_free(n[k]) || is_free(n[e[0]]) || is_free(n[e[1]]) || is_free(n[e[2]])) frames_.push_back({h, k});
       }
-      if (std::any_of(n.begin(), n.end(), free)) frames_.push_back({h, kCentre});
+      if (std::any_of(n.begin(), n.end(), is_free)) frames_.push_back({h, kCentre});
     }
     // One reference length for the whole mesh: the volume term asks every
     // frame for the volume of a cube corner of that edge.
