@@ -55,6 +55,8 @@ struct PlacementReport {
   /// Rounds of the global untangling (untangle.hpp), run when phases 1 and 2
   /// leave hexes <= 0 that are not locked (0: not run).
   int global_rounds = 0;
+  // The figures below take each hex's corners and its centre (Verdict's
+  // measure), which placement is judged by; criterion 7 takes the corners only.
   double min_before = 0, min_after = 0;                     ///< minimum scaled Jacobian
   double mean_before = 0, mean_after = 0;                   ///< mean scaled Jacobian
   std::size_t below_zero_before = 0, below_zero_after = 0;  ///< hexes <= 0
