@@ -10,6 +10,7 @@
 #include "src/check/validity.hpp"
 #include "src/closure/cavities.hpp"
 #include "src/closure/database.hpp"
+#include "src/closure/database_improve.hpp"
 #include "src/closure/shelling_search.hpp"
 #include "src/fill/fill.hpp"
 #include "src/gen/generators.hpp"
@@ -87,6 +88,30 @@ TEST_CASE("the shipped database: every entry replays to a valid mesh, and a rebu
   test::ScratchDir dir("db");
   db.save(dir / "again.txt");
   CHECK(test::slurp(dir / "again.txt") == test::slurp(database_file(weave::default_rules_dir())));
+}
+
+TEST_CASE("the database's own search gives an entry a smaller mesh where it finds one") {
+  Database db = Database::build({1, 40, 40});
+  REQUIRE(db.size() == 1);
+  const quadmap::Code cube = db.entries().front().code;
+  // The cube's boundary meshed the long way: an inner cube and a pillow of
+  // six hexes round it, listed outwards (the inner cube first).
+  const Hex outer = mesh_of(db.entries().front()).front();
+  static constexpr int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 2, 6, 5}};
+  std::vector<Hex> pillowed{{8, 9, 10, 11, 12, 13, 14, 15}};
+  for (const auto& f : faces)
+    pillowed.push_back({outer[f[0]], outer[f[1]], outer[f[2]], outer[f[3]], 8u + f[0], 8u + f[1], 8u + f[2], 8u + f[3]});
+  db.replace(entry_of_mesh(cube, pillowed));
+  REQUIRE(db.find(cube)->hexes() == 7);
+
+  const DatabaseImprovement r = improve_by_search(db, ClosureOptions{});
+  CHECK(r.searched == 1);
+  CHECK(r.improved == 1);
+  CHECK(r.hexes_saved == 6);
+  CHECK(db.find(cube)->hexes() == 1);
+  CHECK(check_against(surface_of(quadmap::map_of_code(cube)), mesh_of(*db.find(cube))).combinatorial_valid());
+  // Nothing is left to improve.
+  CHECK(improve_by_search(db, ClosureOptions{}).improved == 0);
 }
 
 TEST_CASE("a broken database file is refused naming its line") {

@@ -43,6 +43,12 @@ void Database::add(Entry e) {
   entries_.push_back(std::move(e));
 }
 
+void Database::replace(Entry e) {
+  auto it = index_.find(e.code);
+  if (it == index_.end()) throw std::logic_error("database: replacing an entry it does not hold");
+  entries_[it->second] = std::move(e);
+}
+
 const Database::Entry* Database::find(const Code& code) const {
   auto it = index_.find(code);
   return it == index_.end() ? nullptr : &entries_[it->second];

@@ -62,6 +62,9 @@ public:
   const std::vector<Entry>& entries() const { return entries_; }
   std::size_t size() const { return entries_.size(); }
   void add(Entry e);
+  /// Gives the entry with e's code e's mesh instead; std::logic_error if
+  /// there is no such entry.
+  void replace(Entry e);
 
 private:
   std::vector<Entry> entries_;
