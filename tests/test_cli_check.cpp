@@ -202,3 +202,21 @@ TEST_CASE("the scaled Jacobians as a histogram: in check --json, weave's report,
   CHECK(report["scaled_jacobian_histogram"]["counts"][19] == 8);
   CHECK(slurp(dir / "box.svg").find("scaled Jacobian (8 hexes)") != std::string::npos);
 }
+
+TEST_CASE("loom check of a twisted hex: exit 0 by criterion 7, and the line and JSON say its centre is not positive") {
+  ScratchDir dir("cli-twisted");
+  HexMesh m;  // one hex of quadrangulation 12 4 as placed before the untangler saw centres
+  m.points = {{0.329, 0.577, 0.126}, {0.529, 0.499, 0.198}, {0.399, 0.0, 0.379}, {0.696, 0.776, 0.0},
+              {0.3, 0.594, 0.148},   {1.0, 0.48, 0.208},   {0.434, 0.177, 0.337}, {0.0, 0.758, 0.288}};
+  m.hexes = {{0, 1, 2, 3, 4, 5, 6, 7}};
+  write_hex_mesh(dir / "twisted.vtk", m);
+  auto r = run_cli("check " + (dir / "twisted.vtk").string());
+  CHECK(r.status == 0);
+  CHECK_MESSAGE(r.out.find("; but 1 hex with every corner positive has a centre Jacobian <= 0") != std::string::npos, r.out);
+  r = run_cli("check " + (dir / "twisted.vtk").string() + " --json");
+  CHECK(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["valid"] == true);
+  CHECK(j["verdict_below_zero"] == 1);
+  CHECK(j["verdict_min_scaled_jacobian"].get<double>() == doctest::Approx(-0.716).epsilon(0.01));
+}
