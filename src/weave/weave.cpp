@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "engine/strategy_run.hpp"
+#include "src/closure/database.hpp"
+#include "src/weave/database_closure.hpp"
 #include "src/weave/improper.hpp"
 #include "src/weave/pillow.hpp"
 #include "src/weave/remove_hex.hpp"
@@ -109,6 +111,21 @@ engine::Actions weave_actions(stc::Stc& stc) {
   // remove_hex(h): h taken off again, the inverse of gluing it on (remove_hex.hpp).
   actions.add("remove_hex", {{"h", hex}}, [&stc](engine::Graph&, std::span<const engine::Id> args) {
     remove_hex(stc, args[0]);
+  });
+  // closes_from_database(f): the front component of whisker f is closed and
+  // small, and the closure database's mesh for it fits (database_closure.hpp);
+  // close_from_database(f) puts that mesh in. The database is the one under
+  // the default rules directory (LOOM_RULES), read on first use.
+  const engine::KindId face = stc.ids().face;
+  auto database = []() -> const closure::Database& {
+    static const closure::Database db = closure::Database::load(closure::database_file(default_rules_dir()));
+    return db;
+  };
+  actions.add_test("closes_from_database", {{"f", face}}, [&stc, database](engine::Graph&, std::span<const engine::Id> args) {
+    return closes_from_database(stc, args[0], database());
+  });
+  actions.add("close_from_database", {{"f", face}}, [&stc, database](engine::Graph&, std::span<const engine::Id> args) {
+    close_from_database(stc, args[0], database());
   });
   // split_pinched(n): one node per group of n's hexes that meet only at n;
   // each part's boundary flag is 1 exactly when it holds a boundary face.
