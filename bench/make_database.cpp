@@ -13,6 +13,7 @@
 #include "bench/bench_options.hpp"
 #include "src/closure/database.hpp"
 #include "src/closure/database_improve.hpp"
+#include "src/util/error.hpp"
 
 int main(int argc, char** argv) {
   using namespace loom;
@@ -35,12 +36,18 @@ int main(int argc, char** argv) {
 
   const auto start = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  closure::Database db = !from.empty() ? closure::Database::load(from)
-                                        : closure::Database::build(limits, [&](int hexes, std::size_t reached) {
-                                            if (hexes % 5 == 0)
-                                              std::cerr << fmt::format("{} hexes: {} boundaries reached ({:.0f} s)\n",
-                                                                       hexes, reached, seconds());
-                                          });
+  closure::Database db;
+  try {
+    db = !from.empty() ? closure::Database::load(from)
+                       : closure::Database::build(limits, [&](int hexes, std::size_t reached) {
+                           if (hexes % 5 == 0)
+                             std::cerr << fmt::format("{} hexes: {} boundaries reached ({:.0f} s)\n", hexes, reached,
+                                                      seconds());
+                         });
+  } catch (const InputError& e) {
+    std::cerr << "make_database: " << e.what() << "\n";
+    return 2;
+  }
   const double built = seconds();
   closure::DatabaseImprovement better;
   if (improve > 0) {
