@@ -8,6 +8,7 @@
 #include "src/check/validity.hpp"
 #include "src/closure/database.hpp"
 #include "src/gen/generators.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 #include "src/quadmap/canonical.hpp"
 #include "src/quadmap/quad_map.hpp"
 #include "src/stc/build.hpp"
@@ -31,11 +32,6 @@ std::vector<engine::Rule> rules_with_template() {
   for (auto& r : engine::compile_rules(test::slurp(file), file.string(), *stc::StcSchema::get().schema))
     rules.push_back(std::move(r));
   return rules;
-}
-
-std::size_t applied(const engine::Engine& eng, const std::string& rule) {
-  auto it = eng.applications().find(rule);
-  return it == eng.applications().end() ? 0 : it->second;
 }
 
 }  // namespace
@@ -82,4 +78,21 @@ TEST_CASE("with the template rule the weave closes small surfaces that the shipp
     CHECK(check_hex_mesh(stc::to_hex_mesh(b), &surface).combinatorial_valid());
   }
   CHECK(closed_base < 5);
+}
+
+TEST_CASE("loom weave's pipeline reports the template rule's hexes as from the database, not woven") {
+  pipeline::MeshingOptions options;
+  options.closure = pipeline::Closure::none;
+  const pipeline::MeshingResult r = pipeline::mesh_surface(gen::randquad(12, 1), rules_with_template(), options);
+  REQUIRE(r.mesh);
+  CHECK(r.made_by == "woven");
+  REQUIRE_FALSE(r.source.empty());
+  const auto from_database = std::count(r.source.begin(), r.source.end(), closure::HexSource::database);
+  const auto woven = std::count(r.source.begin(), r.source.end(), closure::HexSource::woven);
+  CHECK(from_database == static_cast<std::ptrdiff_t>(shipped_database()
+                                                         .find(quadmap::canonical_unoriented(
+                                                                   quadmap::from_surface(gen::randquad(12, 1)))
+                                                                   .code)
+                                                         ->hexes()));
+  CHECK(woven == 0);
 }

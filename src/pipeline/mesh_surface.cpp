@@ -112,7 +112,10 @@ void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine
   try {
     Candidate c;
     c.mesh = stc::to_hex_mesh(r.stc, &c.fixed);
-    c.source.assign(c.mesh.hexes.size(), HexSource::woven);
+    // to_hex_mesh keeps the STC's hex order; a template rule's hexes came from the database.
+    for (stc::Id h : r.stc.graph().members(r.stc.ids().hex))
+      c.source.push_back(r.stc.graph().get(h, r.stc.ids().hex_source) == stc::kHexFromDatabase ? HexSource::database
+                                                                                                : HexSource::woven);
     place(c, surface);
     adopt(r, std::move(c), "woven");
   } catch (const std::runtime_error& e) {

@@ -19,7 +19,8 @@
 // than the faces it was made from), node.point (index into points(), or -1
 // while unplaced), node.boundary (1 on the boundary surface; the number of
 // surface nodes it stands for once seam_through has merged some), hex.source (index
-// in the hex mesh it was built from, or -1), sheet.self (1 if
+// in the hex mesh it was built from, -1 when a rule made it, or
+// kHexFromDatabase), sheet.self (1 if
 // self-intersecting), chord.self (1 if it passes a hex twice or lies twice on
 // one sheet).
 //
@@ -41,6 +42,10 @@ namespace loom::stc {
 
 using engine::Id;
 using engine::no_element;
+
+/// hex.source of a hex put in from the closure database, not woven
+/// (weave/database_closure.hpp).
+inline constexpr std::int32_t kHexFromDatabase = -2;
 
 /// Ids of the STC schema's kinds, ports and attributes.
 struct StcSchema {

@@ -11,6 +11,7 @@
 
 #include "src/closure/cavity.hpp"
 #include "src/closure/shelling_search.hpp"
+#include "src/quadmap/hex_glue.hpp"
 #include "src/stc/primal.hpp"
 #include "src/weave/pillow_detail.hpp"
 
@@ -23,9 +24,15 @@ using stc::Stc;
 
 namespace {
 
-/// Per face slot of a hex (stc.hpp), its corners in the order that faces
-/// into the hex, for hexes oriented as the database places them.
-constexpr int kInward[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 5, 6, 2}};
+/// The STC's hex face slots (stc.hpp) as indices into quadmap::outward_faces.
+constexpr int kOutwardOfSlot[6] = {0, 1, 2, 4, 5, 3};
+
+/// Face `slot` of a hex, its corners in the order that faces into the hex
+/// (for hexes oriented as the database places them).
+Quad inward_face(const Hex& h, int slot) {
+  const Quad q = quadmap::outward_faces(h)[kOutwardOfSlot[slot]];
+  return {q[0], q[3], q[2], q[1]};
+}
 /// Per axis of a hex, the four edges joining faces 2*axis and 2*axis + 1.
 constexpr int kAxisEdges[3][4][2] = {{{0, 4}, {1, 5}, {2, 6}, {3, 7}},
                                      {{0, 3}, {1, 2}, {4, 7}, {5, 6}},
@@ -137,9 +144,9 @@ public:
     }
     if (needs_mirroring(p, hexes))
       for (Hex& h : hexes) h = {h[4], h[5], h[6], h[7], h[0], h[1], h[2], h[3]};
-    std::vector<std::array<Id, 8>> corners;
+    std::vector<Hex> corners;
     for (const Hex& h : hexes) {
-      std::array<Id, 8> c;
+      Hex c;
       for (unsigned k = 0; k < 8; ++k) c[k] = node(p, h[k]);
       corners.push_back(c);
     }
@@ -173,8 +180,9 @@ private:
       front.emplace(k, q);
     }
     for (const Hex& h : hexes)
-      for (const auto& slot : kInward) {
-        std::array<std::uint32_t, 4> inward{h[slot[0]], h[slot[1]], h[slot[2]], h[slot[3]]}, k = inward;
+      for (int slot = 0; slot < 6; ++slot) {
+        const Quad inward = inward_face(h, slot);
+        Quad k = inward;
         std::sort(k.begin(), k.end());
         auto it = front.find(k);
         if (it == front.end()) continue;
@@ -201,11 +209,11 @@ private:
     return e;
   }
 
-  Id add_hex(const std::array<Id, 8>& c, int layer) {
+  Id add_hex(const Hex& c, int layer) {
     const Id h = g_.add(ids_.hex);
+    g_.set(h, ids_.hex_source, stc::kHexFromDatabase);
     for (unsigned i = 0; i < 6; ++i) {
-      std::array<Id, 4> cycle;
-      for (unsigned k = 0; k < 4; ++k) cycle[k] = c[kInward[i][k]];
+      const Quad cycle = inward_face(c, static_cast<int>(i));
       auto [it, fresh] = faces_.try_emplace(key_of(cycle), no_element);
       if (!fresh) {
         if (stc_.face_cell(it->second, 0) != no_element)
@@ -238,7 +246,7 @@ private:
   /// Parallel edges of a hex lie on one sheet: new edges take their
   /// neighbours' sheet, sheets that meet in a hex are merged, and edges with
   /// no sheet anywhere near get a new one.
-  void join_sheets(const std::vector<Id>& made, const std::vector<std::array<Id, 8>>& corners) {
+  void join_sheets(const std::vector<Id>& made, const std::vector<Hex>& corners) {
     std::vector<std::array<std::array<Id, 4>, 3>> axis_edges(made.size());
     for (std::size_t h = 0; h < made.size(); ++h)
       for (int a = 0; a < 3; ++a)
@@ -321,7 +329,7 @@ private:
 
   /// New nodes at the mean of their placed neighbours, spreading inwards;
   /// placement decides the final positions.
-  void place_new_nodes(const std::vector<std::array<Id, 8>>& corners) {
+  void place_new_nodes(const std::vector<Hex>& corners) {
     std::map<Id, std::vector<Id>> next;
     for (const auto& c : corners)
       for (const auto& axis : kAxisEdges)
