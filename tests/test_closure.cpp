@@ -175,6 +175,32 @@ TEST_CASE("the woven hexes of a weave cut short are kept, and the cavity they le
   CHECK(check_hex_mesh(closed.mesh, &box).combinatorial_valid());
 }
 
+TEST_CASE("hexes a template rule put into the weave stay database hexes through cavity closure") {
+  const QuadSurface box = gen::box(3, 3, 3);
+  auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  stc::Stc s = stc::build_from_surface(box);
+  weave::WeaveOptions options;
+  options.max_steps = 30;
+  REQUIRE_FALSE(weave::weave(s, rules, options).closed);
+  const HexMesh partial = stc::woven_over_surface(s, box.points.size());
+  REQUIRE(partial.hexes.size() > 5);
+  // Say the first two came from the database.
+  std::vector<HexSource> given(partial.hexes.size(), HexSource::woven);
+  given[0] = given[1] = HexSource::database;
+  const auto closed = pipeline::close_cavities(box, partial, &shipped_database(), {}, {}, given);
+  REQUIRE(closed.complete);
+  CHECK(closed.report.peeled == 0);
+  CHECK(closed.report.woven == partial.hexes.size() - 2);
+  CHECK(closed.report.database >= 2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto at = std::find(closed.mesh.hexes.begin(), closed.mesh.hexes.end(), partial.hexes[i]);
+    REQUIRE(at != closed.mesh.hexes.end());
+    CHECK(closed.source[static_cast<std::size_t>(at - closed.mesh.hexes.begin())] == HexSource::database);
+  }
+  CHECK_THROWS_AS(pipeline::close_cavities(box, partial, &shipped_database(), {}, {}, {HexSource::woven}),
+                  std::logic_error);
+}
+
 TEST_CASE("woven hexes that could not be part of a valid mesh are peeled off") {
   const QuadSurface cube = gen::box(1, 1, 1);
   auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <map>
 #include <set>
+#include <stdexcept>
 
 #include "src/closure/cavities.hpp"
 #include "src/fill/fill.hpp"
@@ -237,10 +238,14 @@ PulledBack without_hexes_on(const HexMesh& m, const std::vector<Quad>& front, st
 }
 
 ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, const closure::Database* db,
-                          const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options) {
+                          const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options,
+                          const std::vector<HexSource>& woven_source) {
   const auto start = std::chrono::steady_clock::now();
+  if (!woven_source.empty() && woven_source.size() != woven.hexes.size())
+    throw std::logic_error("close_cavities: one source per woven hex");
   HexMesh current = woven;
-  std::vector<HexSource> current_source(woven.hexes.size(), HexSource::woven);
+  std::vector<HexSource> current_source =
+      woven_source.empty() ? std::vector<HexSource>(woven.hexes.size(), HexSource::woven) : woven_source;
   ClosureReport total;
   ClosedMesh out;
   for (std::size_t round = 0;; ++round) {
@@ -271,7 +276,13 @@ ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, cons
     if (s == HexSource::searched) ++report.searched;
     if (s == HexSource::database) ++report.database;
   }
-  report.peeled = woven.hexes.size() - report.woven;
+  // Peeled: the hexes given that are not in the mesh (a database hex given
+  // and kept counts as database, like those the search placed).
+  std::set<Hex> given;
+  for (const Hex& h : woven.hexes) given.insert(sorted(h));
+  std::size_t kept = 0;
+  for (const Hex& h : out.mesh.hexes) kept += given.count(sorted(h));
+  report.peeled = woven.hexes.size() - kept;
   out.on_boundary.assign(out.mesh.points.size(), false);
   for (std::size_t p = 0; p < surface.points.size(); ++p) out.on_boundary[p] = true;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

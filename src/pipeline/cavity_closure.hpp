@@ -62,6 +62,8 @@ struct ClosedMesh {
 /// A filled cavity is pillowed (geometry::pillow_region), so that its fill
 /// meets the hexes round it in single faces, edges or vertices. Throws
 /// InputError when a cavity cannot be filled (the fill's message).
+/// `woven_source` says where each hex of `woven` came from (a template rule
+/// puts database hexes into a weave); empty means every one is woven.
 struct PulledBack {
   HexMesh mesh;
   std::vector<std::size_t> kept;  ///< per hex of `mesh`: its index in the mesh it came from
@@ -73,6 +75,7 @@ struct PulledBack {
 PulledBack without_hexes_on(const HexMesh& m, const std::vector<Quad>& front, std::size_t keep_points);
 
 ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, const closure::Database* db,
-                          const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options);
+                          const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options,
+                          const std::vector<closure::HexSource>& woven_source = {});
 
 }  // namespace loom::pipeline

@@ -95,6 +95,16 @@ void adopt(MeshingResult& r, Candidate&& c, std::string made_by) {
   r.made_by = std::move(made_by);
 }
 
+/// Where each STC hex came from: woven, or put in whole by a template rule (the database).
+std::vector<HexSource> sources_of(const stc::Stc& stc, const std::vector<stc::Id>& hexes) {
+  std::vector<HexSource> out;
+  out.reserve(hexes.size());
+  for (stc::Id h : hexes)
+    out.push_back(stc.graph().get(h, stc.ids().hex_source) == stc::kHexFromDatabase ? HexSource::database
+                                                                                     : HexSource::woven);
+  return out;
+}
+
 void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine::Rule> rules,
                 const weave::WeaveOptions& options, const std::function<void(const char*)>& on_stage) {
   if (on_stage) on_stage("weaving");
@@ -112,10 +122,8 @@ void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine
   try {
     Candidate c;
     c.mesh = stc::to_hex_mesh(r.stc, &c.fixed);
-    // to_hex_mesh keeps the STC's hex order; a template rule's hexes came from the database.
-    for (stc::Id h : r.stc.graph().members(r.stc.ids().hex))
-      c.source.push_back(r.stc.graph().get(h, r.stc.ids().hex_source) == stc::kHexFromDatabase ? HexSource::database
-                                                                                                : HexSource::woven);
+    // to_hex_mesh keeps the STC's hex order.
+    c.source = sources_of(r.stc, r.stc.graph().members(r.stc.ids().hex));
     place(c, surface);
     adopt(r, std::move(c), "woven");
   } catch (const std::runtime_error& e) {
@@ -153,13 +161,13 @@ Candidate placed_candidate(ClosedMesh&& closed, const QuadSurface& surface) {
   return c;
 }
 
-void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMesh& woven, Resources& res,
-                       const MeshingOptions& options) {
+void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMesh& woven,
+                       const std::vector<HexSource>& woven_source, Resources& res, const MeshingOptions& options) {
   if (options.on_stage) options.on_stage("closing cavities");
   try {
     const bool fill = options.closure == Closure::full;
     ClosedMesh closed = close_cavities(surface, woven, res.database(), fill ? res.caps() : std::vector<fill::Cap>{},
-                                       options.search);
+                                       options.search, woven_source);
     r.closure = closed.report;
     if (!closed.complete) {
       r.closure_failure = "the search left cavities and the fill is off";
@@ -236,6 +244,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
   weave::WeaveOptions attempt = options.weave;
   const std::uint64_t first_seed = options.weave.strategy.random() ? options.weave.strategy.seed : 0;
   std::optional<HexMesh> best_woven;  // of the attempt that left the fewest whiskers
+  std::vector<HexSource> best_woven_source;
   std::size_t best_left = SIZE_MAX;
   for (r.attempts = 1;; ++r.attempts) {
     r.strategy = attempt.strategy;
@@ -243,7 +252,9 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     if (r.combinatorially_valid()) break;
     if (options.closure != Closure::none && r.weave.whiskers_left < best_left) {
       best_left = r.weave.whiskers_left;
-      best_woven = stc::woven_over_surface(r.stc, surface.points.size());
+      std::vector<stc::Id> hexes;
+      best_woven = stc::woven_over_surface(r.stc, surface.points.size(), &hexes);
+      best_woven_source = sources_of(r.stc, hexes);
     }
     if (r.attempts >= options.attempts) break;
     attempt.strategy = options.weave.strategy.with_random_picks();
@@ -262,7 +273,7 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
                                     "mesh it; try more --attempts or another --strategy", (2 - euler) / 2);
   else if (options.closure != Closure::none) {
     Resources res(options);
-    if (!r.combinatorially_valid()) close_cavities_of(r, surface, *best_woven, res, options);
+    if (!r.combinatorially_valid()) close_cavities_of(r, surface, *best_woven, best_woven_source, res, options);
     const bool small = surface.quads.size() <= kDirectSearchQuads;
     auto budget = [&options](std::size_t expansions) {
       closure::ClosureOptions search = options.search;

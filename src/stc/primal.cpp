@@ -80,7 +80,7 @@ HexMesh woven_hexes(const Stc& stc) {
   return mesh;
 }
 
-HexMesh woven_over_surface(const Stc& stc, std::size_t surface_points) {
+HexMesh woven_over_surface(const Stc& stc, std::size_t surface_points, std::vector<Id>* hexes) {
   const engine::Graph& g = stc.graph();
   const StcSchema& ids = stc.ids();
   HexMesh mesh;
@@ -97,6 +97,7 @@ HexMesh woven_over_surface(const Stc& stc, std::size_t surface_points) {
     }
     return index[n];
   };
+  if (hexes) hexes->clear();
   for (Id h : g.members(ids.hex)) {
     Hex hex{};
     bool whole = true;
@@ -104,7 +105,9 @@ HexMesh woven_over_surface(const Stc& stc, std::size_t surface_points) {
       const Id n = corner_node(stc, h, k);
       whole = n != no_element && (hex[k] = vertex_of(n)) != UINT32_MAX;
     }
-    if (whole) mesh.hexes.push_back(hex);
+    if (!whole) continue;
+    mesh.hexes.push_back(hex);
+    if (hexes) hexes->push_back(h);
   }
   return mesh;
 }

@@ -32,7 +32,8 @@ HexMesh woven_hexes(const Stc& stc);
 /// (build_from_surface): points 0..surface_points-1 are the surface's, in
 /// order, then one per inner node used (at its position, or the origin while
 /// unplaced). A hex that is degenerate or has a node standing for several
-/// surface nodes (a through-cell, node.boundary > 1) is left out.
-HexMesh woven_over_surface(const Stc& stc, std::size_t surface_points);
+/// surface nodes (a through-cell, node.boundary > 1) is left out. With
+/// `hexes`, also gives the STC hex of each hex written.
+HexMesh woven_over_surface(const Stc& stc, std::size_t surface_points, std::vector<Id>* hexes = nullptr);
 
 }  // namespace loom::stc
