@@ -27,6 +27,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(6, 64));
   app.add_option("--store-quads", limits.store_quads, "keep boundaries of up to this many quads (default 18)")
       ->check(CLI::Range(6, 64));
+  app.add_option("--grown-per-boundary", limits.grown_per_boundary,
+                 "grow up to this many meshes of each boundary, touching it differently (default 1)")
+      ->check(CLI::Range(1, 16));
   std::size_t improve = 0;
   std::string from;
   app.add_option("--from", from, "start from this database file instead of the outward shelling (to improve it)");
@@ -41,7 +44,7 @@ int main(int argc, char** argv) {
     db = !from.empty() ? closure::Database::load(from)
                        : closure::Database::build(limits, [&](int hexes, std::size_t reached) {
                            if (hexes % 5 == 0)
-                             std::cerr << fmt::format("{} hexes: {} boundaries reached ({:.0f} s)\n", hexes, reached,
+                             std::cerr << fmt::format("{} hexes: {} meshes grown ({:.0f} s)\n", hexes, reached,
                                                       seconds());
                          });
   } catch (const InputError& e) {

@@ -75,6 +75,23 @@ TEST_CASE("the outward shelling finds as many meshes of 1 to 6 hexes as Verhetse
   }
 }
 
+TEST_CASE("growing several meshes per boundary reaches the same boundaries in as few hexes, and keeps one mesh each") {
+  DatabaseLimits one{6, 40, 40}, three{6, 40, 40};
+  three.grown_per_boundary = 3;
+  std::size_t grown_one = 0, grown_three = 0;
+  const Database a = Database::build(one, [&](int, std::size_t n) { grown_one = n; });
+  const Database b = Database::build(three, [&](int, std::size_t n) { grown_three = n; });
+  CHECK(grown_three > grown_one);  // the other meshes of a boundary were grown too
+  REQUIRE(b.size() == a.size());   // every boundary of up to 6 hexes, once
+  for (const auto& e : b.entries()) {
+    const auto* same = a.find(e.code);
+    REQUIRE(same != nullptr);
+    CHECK(e.hexes() == same->hexes());
+    const auto hexes = mesh_of(e);
+    CHECK(check_against(surface_of(quadmap::map_of_code(e.code)), hexes).combinatorial_valid());
+  }
+}
+
 TEST_CASE("the shipped database: every entry replays to a valid mesh, and a rebuild writes the same file") {
   const Database& db = shipped_database();
   REQUIRE(db.size() > 1000);

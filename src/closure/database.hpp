@@ -6,7 +6,8 @@
 // n + 1 hexes is a mesh of n with one hex glued onto its boundary
 // (hex_glue.hpp), kept when its boundary stays proper and the new hex meets
 // the others properly. Breadth first, so the first mesh found for a boundary
-// has the fewest hexes such a shelling gives it. Boundaries are keyed by
+// has the fewest hexes such a shelling gives it; up to grown_per_boundary
+// meshes of each boundary are grown on. Boundaries are keyed by
 // their canonical code up to reflection (canonical.hpp).
 //
 // An entry stores its mesh as a shelling from the boundary inwards: start
@@ -36,6 +37,10 @@ struct DatabaseLimits {
   int max_hexes = 6;     ///< meshes of up to this many hexes (at most 255)
   int max_quads = 24;    ///< boundaries of up to this many quads are grown
   int store_quads = 24;  ///< of those, boundaries of up to this many quads are kept
+  /// Meshes grown further per boundary: the first one found, and then others
+  /// whose hexes touch the boundary in other corners (another mesh inside the
+  /// same boundary allows other gluings outside it). Only the first is kept.
+  int grown_per_boundary = 1;
 };
 
 class Database {
@@ -48,9 +53,10 @@ public:
 
   Database() = default;
   /// Shells outwards from one hex as DatabaseLimits allows. `progress` (if
-  /// set) gets the number of hexes done and the boundaries reached so far.
+  /// set) gets the number of hexes done and the meshes grown so far (one per
+  /// boundary reached when grown_per_boundary is 1).
   static Database build(const DatabaseLimits& limits,
-                        const std::function<void(int hexes, std::size_t boundaries)>& progress = {});
+                        const std::function<void(int hexes, std::size_t meshes)>& progress = {});
   /// Throws InputError naming the file and line for anything it cannot read.
   static Database load(const std::filesystem::path& file);
   /// The same from the file's text; `where` names it in errors.

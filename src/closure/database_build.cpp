@@ -2,6 +2,8 @@
 // within the limits, breadth first (database.hpp).
 #include <algorithm>
 #include <stdexcept>
+#include <array>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "src/closure/cavity.hpp"
@@ -56,7 +58,30 @@ struct Reached {
   std::uint8_t sides;
   std::uint8_t hexes;
   std::uint16_t quads;
+  bool first = true;  ///< the first mesh found for its boundary (the one stored)
 };
+
+/// How a mesh's hexes touch its boundary: for each hex with a corner on it,
+/// the boundary corners (as the code numbers them), as a hash. Meshes alike
+/// in this allow the same gluings outside.
+std::uint64_t contact_hash(const MeshEntry& e) {
+  std::vector<std::array<std::uint32_t, 9>> contacts;
+  for (const Hex& h : e.hexes) {
+    std::array<std::uint32_t, 9> c;
+    c.fill(UINT32_MAX);
+    std::uint32_t n = 0;
+    for (std::uint32_t v : h)
+      if (v < e.boundary_vertices) c[n++] = v;
+    if (n == 0) continue;
+    std::sort(c.begin(), c.begin() + n);
+    contacts.push_back(c);
+  }
+  std::sort(contacts.begin(), contacts.end());
+  std::uint64_t hash = 1469598103934665603ull;
+  for (const auto& c : contacts)
+    for (std::uint32_t x : c) hash = (hash ^ x) * 1099511628211ull;
+  return hash;
+}
 
 /// A boundary still to grow from: its code and the hexes with a corner on it
 /// (the only ones a hex glued outside can touch), numbered as the code is.
@@ -120,7 +145,13 @@ Database Database::build(const DatabaseLimits& limits, const std::function<void(
   const MeshEntry cube_entry = entry_of(cube_boundary, {cube});
 
   std::vector<Reached> nodes{{0, 0, 0, 1, 6}};
-  std::unordered_set<std::uint64_t> seen{code_hash(cube_entry.code)};
+  // Per boundary reached, how many of its meshes were grown; when more than
+  // one may be, also which contacts those had (boundary and contact hashes mixed).
+  const int most = std::clamp(limits.grown_per_boundary, 1, 255);
+  auto pair_key = [](std::uint64_t code, std::uint64_t contact) { return code ^ (contact * 0x9E3779B97F4A7C15ull); };
+  std::unordered_map<std::uint64_t, std::uint8_t> grown_of{{code_hash(cube_entry.code), 1}};
+  std::unordered_set<std::uint64_t> contacts_grown;
+  if (most > 1) contacts_grown.insert(pair_key(code_hash(cube_entry.code), contact_hash(cube_entry)));
   std::vector<Frontier> level{{0, cube_entry.code, cube_entry.hexes}};
   if (progress) progress(1, nodes.size());
   for (int hexes = 1; hexes < limits.max_hexes && !level.empty(); ++hexes) {
@@ -140,9 +171,13 @@ Database Database::build(const DatabaseLimits& limits, const std::function<void(
           std::vector<Hex> grown = f.touching;
           grown.push_back(glued.hex);
           MeshEntry e = entry_of(quadmap::mirrored(glued.after), grown);
-          if (!seen.insert(code_hash(e.code)).second) continue;
+          const std::uint64_t code = code_hash(e.code);
+          std::uint8_t& meshes_grown = grown_of[code];
+          if (meshes_grown >= most) continue;
+          if (most > 1 && !contacts_grown.insert(pair_key(code, contact_hash(e))).second) continue;
+          const bool first = meshes_grown++ == 0;
           nodes.push_back({f.node, static_cast<std::uint16_t>(q), sides, static_cast<std::uint8_t>(hexes + 1),
-                           static_cast<std::uint16_t>(glued.after.size())});
+                           static_cast<std::uint16_t>(glued.after.size()), first});
           next_level.push_back({static_cast<std::uint32_t>(nodes.size() - 1), std::move(e.code),
                                 touching(e.hexes, e.boundary_vertices)});
         }
@@ -153,7 +188,7 @@ Database Database::build(const DatabaseLimits& limits, const std::function<void(
 
   Database db;
   for (std::uint32_t n = 0; n < nodes.size(); ++n)
-    if (nodes[n].quads <= limits.store_quads) {
+    if (nodes[n].first && nodes[n].quads <= limits.store_quads) {
       const MeshEntry m = n == 0 ? cube_entry : replay(nodes, n, cube_entry);
       db.add(entry_of_mesh(m.code, m.hexes));
     }
