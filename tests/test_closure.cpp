@@ -170,15 +170,19 @@ TEST_CASE("the search closes small surfaces with valid meshes, the spindle with 
   CHECK(std::count(with.source.begin(), with.source.end(), HexSource::database) > 0);
 }
 
-TEST_CASE("the woven hexes of a weave cut short are kept, and the cavity they leave is closed") {
-  const QuadSurface box = gen::box(3, 3, 3);
+/// The hexes of a weave of `surface` stopped after 30 steps, over the surface's points.
+static HexMesh weave_cut_short(const QuadSurface& surface) {
   auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
-  stc::Stc s = stc::build_from_surface(box);
+  stc::Stc s = stc::build_from_surface(surface);
   weave::WeaveOptions options;
   options.max_steps = 30;
-  const auto woven = weave::weave(s, rules, options);
-  REQUIRE_FALSE(woven.closed);
-  const HexMesh partial = stc::woven_over_surface(s, box.points.size());
+  REQUIRE_FALSE(weave::weave(s, rules, options).closed);
+  return stc::woven_over_surface(s, surface.points.size());
+}
+
+TEST_CASE("the woven hexes of a weave cut short are kept, and the cavity they leave is closed") {
+  const QuadSurface box = gen::box(3, 3, 3);
+  const HexMesh partial = weave_cut_short(box);
   REQUIRE(partial.hexes.size() > 5);
   const Cavities c = cavities_left(box, partial.hexes);
   CHECK(c.peeled == 0);
@@ -194,12 +198,7 @@ TEST_CASE("the woven hexes of a weave cut short are kept, and the cavity they le
 
 TEST_CASE("hexes a template rule put into the weave stay database hexes through cavity closure") {
   const QuadSurface box = gen::box(3, 3, 3);
-  auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
-  stc::Stc s = stc::build_from_surface(box);
-  weave::WeaveOptions options;
-  options.max_steps = 30;
-  REQUIRE_FALSE(weave::weave(s, rules, options).closed);
-  const HexMesh partial = stc::woven_over_surface(s, box.points.size());
+  const HexMesh partial = weave_cut_short(box);
   REQUIRE(partial.hexes.size() > 5);
   // Say the first two came from the database.
   std::vector<HexSource> given(partial.hexes.size(), HexSource::woven);
