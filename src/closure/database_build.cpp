@@ -1,8 +1,8 @@
 // Database::build: all meshes a shelling outwards from one hex reaches
 // within the limits, breadth first (database.hpp).
 #include <algorithm>
-#include <stdexcept>
 #include <array>
+#include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
 

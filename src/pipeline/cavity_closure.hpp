@@ -28,7 +28,7 @@ inline constexpr std::size_t kMostPullBacks = 6;
 
 struct ClosureReport {
   std::size_t woven = 0;        ///< woven hexes kept
-  std::size_t peeled = 0;       ///< woven hexes removed: peeled to leave proper fronts, or pulled back
+  std::size_t peeled = 0;       ///< hexes given removed: peeled to leave proper fronts, or pulled back
   std::size_t cavities = 0;     ///< pieces of the front
   std::size_t front_quads = 0;  ///< quads of those fronts, before the search
   std::size_t searched = 0, database = 0, filled = 0;  ///< hexes added, by source
@@ -49,6 +49,17 @@ struct ClosedMesh {
   ClosureReport report;
 };
 
+/// What is left of a mesh after a pull-back (without_hexes_on).
+struct PulledBack {
+  HexMesh mesh;
+  std::vector<std::size_t> kept;  ///< per hex of `mesh`: its index in the mesh it came from
+};
+
+/// The hexes of `m` but those with a face on `front` (as a set of corners:
+/// the hexes a stuck front is pressed against), over the points they use; the
+/// first `keep_points` points (the surface's) stay first and in order.
+PulledBack without_hexes_on(const HexMesh& m, const std::vector<Quad>& front, std::size_t keep_points);
+
 /// `woven`: hexes over points whose first surface.points.size() are the
 /// surface's (stc::woven_over_surface). Each cavity's search gets a budget
 /// by its front (above; at least options' budget); when it stops short, the
@@ -64,16 +75,6 @@ struct ClosedMesh {
 /// InputError when a cavity cannot be filled (the fill's message).
 /// `woven_source` says where each hex of `woven` came from (a template rule
 /// puts database hexes into a weave); empty means every one is woven.
-struct PulledBack {
-  HexMesh mesh;
-  std::vector<std::size_t> kept;  ///< per hex of `mesh`: its index in the mesh it came from
-};
-
-/// The hexes of `m` but those with a face on `front` (as a set of corners:
-/// the hexes a stuck front is pressed against), over the points they use; the
-/// first `keep_points` points (the surface's) stay first and in order.
-PulledBack without_hexes_on(const HexMesh& m, const std::vector<Quad>& front, std::size_t keep_points);
-
 ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, const closure::Database* db,
                           const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options,
                           const std::vector<closure::HexSource>& woven_source = {});
