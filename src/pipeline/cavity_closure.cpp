@@ -244,8 +244,9 @@ ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, cons
   if (!woven_source.empty() && woven_source.size() != woven.hexes.size())
     throw std::logic_error("close_cavities: one source per woven hex");
   HexMesh current = woven;
-  std::vector<HexSource> current_source =
+  const std::vector<HexSource> given_source =
       woven_source.empty() ? std::vector<HexSource>(woven.hexes.size(), HexSource::woven) : woven_source;
+  std::vector<HexSource> current_source = given_source;
   ClosureReport total;
   ClosedMesh out;
   for (std::size_t round = 0;; ++round) {
@@ -276,13 +277,9 @@ ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, cons
     if (s == HexSource::searched) ++report.searched;
     if (s == HexSource::database) ++report.database;
   }
-  // Peeled: the hexes given that are not in the mesh (a database hex given
-  // and kept counts as database, like those the search placed).
-  std::set<Hex> given;
-  for (const Hex& h : woven.hexes) given.insert(sorted(h));
-  std::size_t kept = 0;
-  for (const Hex& h : out.mesh.hexes) kept += given.count(sorted(h));
-  report.peeled = woven.hexes.size() - kept;
+  // Counted by source, since a pull-back renumbers the points the hexes use.
+  report.peeled = static_cast<std::size_t>(std::count(given_source.begin(), given_source.end(),
+                                                      HexSource::woven)) - report.woven;
   out.on_boundary.assign(out.mesh.points.size(), false);
   for (std::size_t p = 0; p < surface.points.size(); ++p) out.on_boundary[p] = true;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -28,7 +28,7 @@ inline constexpr std::size_t kMostPullBacks = 6;
 
 struct ClosureReport {
   std::size_t woven = 0;        ///< woven hexes kept
-  std::size_t peeled = 0;       ///< hexes given removed: peeled to leave proper fronts, or pulled back
+  std::size_t peeled = 0;       ///< woven hexes removed: peeled to leave proper fronts, or pulled back
   std::size_t cavities = 0;     ///< pieces of the front
   std::size_t front_quads = 0;  ///< quads of those fronts, before the search
   std::size_t searched = 0, database = 0, filled = 0;  ///< hexes added, by source
