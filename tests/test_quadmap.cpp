@@ -13,6 +13,7 @@
 #include <nautinv.h>
 
 #include "src/gen/generators.hpp"
+#include "src/quadmap/automorphisms.hpp"
 #include "src/quadmap/canonical.hpp"
 #include "src/quadmap/enumerate.hpp"
 #include "src/quadmap/hex_glue.hpp"
@@ -130,6 +131,47 @@ TEST_CASE("canonical codes do not depend on how a map is written, and tell maps 
   }
   CHECK(nauty_classes.size() == maps.size());  // the enumerator's classes are distinct for nauty too
   CHECK(chiral > 0);
+}
+
+TEST_CASE("automorphisms map quads onto quads, one per canonical start dart, and fall into conjugacy classes") {
+  auto is_automorphism = [](const QuadMap& m, const Permutation& p) {
+    std::set<std::vector<Vertex>> quads;  // each read from its least corner
+    auto read = [](Quad q) {
+      std::rotate(q.begin(), std::min_element(q.begin(), q.end()), q.end());
+      return std::vector<Vertex>(q.begin(), q.end());
+    };
+    for (const Quad& q : m.quads) quads.insert(read(q));
+    return std::all_of(m.quads.begin(), m.quads.end(),
+                       [&](const Quad& q) { return quads.count(read({p[q[0]], p[q[1]], p[q[2]], p[q[3]]})) > 0; });
+  };
+  for (const auto& [m, count] : std::vector<std::pair<QuadMap, std::size_t>>{
+           {pseudo_double_wheel(6), 24}, {pseudo_double_wheel(16), 16}, {pseudo_double_wheel(10), 10}}) {
+    const auto group = automorphisms(m);
+    REQUIRE(group.size() == count);
+    CHECK(group.size() == canonical_oriented(m).starts.size());
+    CHECK(order_of(group.front()) == 1);
+    CHECK(std::set<Permutation>(group.begin(), group.end()).size() == group.size());
+    for (const Permutation& p : group) CHECK(is_automorphism(m, p));
+  }
+  // The octagonal trapezohedron: rotations about its axis of order 2, 4 and
+  // 8, and 8 half-turns about axes across it, which fall into two classes
+  // (through opposite edges, and through the other opposite edges).
+  const auto group = automorphisms(pseudo_double_wheel(16));
+  std::map<int, int> by_order;
+  std::vector<Permutation> half_turns;
+  for (const Permutation& p : group) {
+    ++by_order[order_of(p)];
+    if (order_of(p) == 2) half_turns.push_back(p);
+  }
+  CHECK(by_order == std::map<int, int>{{1, 1}, {2, 9}, {4, 2}, {8, 4}});
+  CHECK(up_to_conjugacy(half_turns, group).size() == 3);
+  // The cube: 3 half-turns about face axes, 6 about edge axes.
+  const auto cube = automorphisms(pseudo_double_wheel(6));
+  std::vector<Permutation> cube_half_turns;
+  for (const Permutation& p : cube)
+    if (order_of(p) == 2) cube_half_turns.push_back(p);
+  CHECK(cube_half_turns.size() == 9);
+  CHECK(up_to_conjugacy(cube_half_turns, cube).size() == 2);
 }
 
 TEST_CASE("simplicity and properness name what is wrong") {
