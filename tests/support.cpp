@@ -6,6 +6,8 @@
 #include <sstream>
 #include <sys/wait.h>
 
+#include "src/weave/weave.hpp"
+
 namespace loom::test {
 
 std::string slurp(const std::filesystem::path& p) {
@@ -67,6 +69,29 @@ int count_lines(const std::string& s) {
   for (char c : s) n += c == '\n';
   if (!s.empty() && s.back() != '\n') ++n;
   return n;
+}
+
+ValidityReport check_against(const QuadSurface& surface, const std::vector<Hex>& hexes) {
+  HexMesh mesh{surface.points, hexes};
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  for (const Hex& h : hexes)
+    for (std::uint32_t v : h)
+      while (mesh.points.size() <= v) mesh.points.push_back({u(rng), u(rng), u(rng)});
+  return check_hex_mesh(mesh, &surface);
+}
+
+QuadSurface surface_of(const quadmap::QuadMap& m) {
+  QuadSurface s{{}, m.quads};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (std::uint32_t v = 0; v < m.vertex_bound; ++v) s.points.push_back({u(rng), u(rng), u(rng)});
+  return s;
+}
+
+const closure::Database& shipped_database() {
+  static const closure::Database db = closure::Database::load(closure::database_file(weave::default_rules_dir()));
+  return db;
 }
 
 }  // namespace loom::test

@@ -1,9 +1,16 @@
 #pragma once
-// Shared helpers for the doctest suites: run the CLI, make scratch directories.
+// Shared helpers for the doctest suites: run the CLI, make scratch directories,
+// check closed meshes.
 #include <filesystem>
 #include <string>
 
+#include <vector>
+
+#include "src/check/validity.hpp"
+#include "src/closure/database.hpp"
+#include "src/mesh/hex_mesh.hpp"
 #include "src/mesh/quad_surface.hpp"
+#include "src/quadmap/quad_map.hpp"
 
 namespace loom::test {
 
@@ -46,5 +53,12 @@ void spit(const std::filesystem::path& p, const std::string& text);
 
 /// The unit cube as 6 outward quads.
 QuadSurface unit_cube();
+
+/// Criteria 1-6 of `hexes` against `surface` (its points first, the rest at random).
+ValidityReport check_against(const QuadSurface& surface, const std::vector<Hex>& hexes);
+/// A surface for a quad map: its vertices at random.
+QuadSurface surface_of(const quadmap::QuadMap& m);
+/// The database shipped in rules/, read once.
+const closure::Database& shipped_database();
 
 }  // namespace loom::test

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <map>
-#include <random>
 
 #include "engine/rule_compiler.hpp"
 #include "src/check/validity.hpp"
@@ -25,35 +24,9 @@
 
 using namespace loom;
 using namespace loom::closure;
-
-namespace {
-
-/// Criteria 1-6 of `hexes` against `surface` (its points first, the rest at random).
-ValidityReport check_against(const QuadSurface& surface, const std::vector<Hex>& hexes) {
-  HexMesh mesh{surface.points, hexes};
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-0.5, 0.5);
-  for (const Hex& h : hexes)
-    for (std::uint32_t v : h)
-      while (mesh.points.size() <= v) mesh.points.push_back({u(rng), u(rng), u(rng)});
-  return check_hex_mesh(mesh, &surface);
-}
-
-/// A surface for a quad map: its vertices at random.
-QuadSurface surface_of(const quadmap::QuadMap& m) {
-  QuadSurface s{{}, m.quads};
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (std::uint32_t v = 0; v < m.vertex_bound; ++v) s.points.push_back({u(rng), u(rng), u(rng)});
-  return s;
-}
-
-const Database& shipped_database() {
-  static const Database db = Database::load(database_file(weave::default_rules_dir()));
-  return db;
-}
-
-}  // namespace
+using test::check_against;
+using test::shipped_database;
+using test::surface_of;
 
 TEST_CASE("the outward shelling finds as many meshes of 1 to 6 hexes as Verhetsel et al. list") {
   // "Finding hexahedrizations for small quadrangulations of the sphere"
@@ -285,14 +258,14 @@ TEST_CASE("closure is deterministic: the same surface gives the same hexes, and 
 
 /// What `loom weave --closure search` does: the shipped rules, 16 attempts,
 /// cavity closure and the search, no fill.
+/// The stages it went through are counted by name in `stages`.
 pipeline::MeshingResult mesh_without_fill(const QuadSurface& surface,
-                                          std::size_t* searches_from_surface = nullptr,
-                                          std::size_t wide_expansions = pipeline::wide_search_defaults().limits.max_expansions) {
+                                          std::map<std::string, int>* stages = nullptr,
+                                          std::size_t wide_expansions = pipeline::wide_search_defaults().limits.max_expansions,
+                                          std::size_t symmetric_depth = closure::SymmetricOptions{}.beam.max_depth) {
   pipeline::MeshingOptions options;
-  if (searches_from_surface)
-    options.on_stage = [searches_from_surface](const char* stage) {
-      *searches_from_surface += std::string(stage) == "searching from the surface";
-    };
+  options.symmetric.beam.max_depth = symmetric_depth;
+  if (stages) options.on_stage = [stages](const char* stage) { ++(*stages)[stage]; };
   options.wide_search.limits.max_expansions = wide_expansions;
   options.attempts = 16;
   options.closure = pipeline::Closure::search;
@@ -316,28 +289,33 @@ TEST_CASE("loom weave's pipeline searches a small surface fully when the weave's
   // Quadrangulation 16 90: the weave gives a valid mesh of 117 hexes; a short
   // search from the surface finds 77, the full one 55 (before the boundary layer).
   const QuadSurface surface = gen::quadrangulation(16, 90);
-  std::size_t searches = 0;
-  const pipeline::MeshingResult r = mesh_without_fill(surface, &searches);
+  std::map<std::string, int> stages;
+  const pipeline::MeshingResult r = mesh_without_fill(surface, &stages);
   REQUIRE(r.combinatorially_valid());
   CHECK(r.made_by == "searched");
   CHECK(r.mesh->hexes.size() - r.boundary_layer.hexes_added <= 72);
-  CHECK(searches == 1);  // within the bound after it: no wide search
+  // Within the bound after it: neither the symmetric nor the wide search.
+  CHECK(stages["searching from the surface"] == 1);
+  CHECK(stages["searching symmetric pairs"] == 0);
   // Placement's global untangling leaves none of the 8 hexes <= 0 that moving
   // one node at a time left.
   CHECK(r.check->quality.below_zero == 0);
   CHECK(r.smoothing.global_rounds > 0);
 }
 
-TEST_CASE("a small surface still over 72 hexes after the direct search gets a wide one" *
+TEST_CASE("a small surface still over 72 hexes after the direct search gets a symmetric one, then a wide one" *
           doctest::skip(kSkipFullSearch)) {
   // Quadrangulation 14 54 (two poles of degree 7): 79 hexes after the direct
-  // search. The wide search's own budget (1,000,000 expansions, 255 s) finds
-  // 67; here it gets 2,000, so only that it runs, and what it may keep, is tested.
+  // search, 81 in symmetric pairs (not kept). The wide search's own budget
+  // (1,000,000 expansions, 255 s) finds 67; here it gets 2,000 and the
+  // symmetric search two levels, so only that they run in turn, and what
+  // they may keep, is tested.
   const QuadSurface surface = gen::quadrangulation(14, 54);
-  std::size_t searches = 0;
-  const pipeline::MeshingResult r = mesh_without_fill(surface, &searches, 2'000);
+  std::map<std::string, int> stages;
+  const pipeline::MeshingResult r = mesh_without_fill(surface, &stages, 2'000, 2);
   REQUIRE(r.combinatorially_valid());
-  CHECK(searches == 2);
+  CHECK(stages["searching symmetric pairs"] == 1);
+  CHECK(stages["searching from the surface"] == 2);
   CHECK(r.mesh->hexes.size() - r.boundary_layer.hexes_added <= 79);
 }
 

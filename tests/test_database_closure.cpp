@@ -18,13 +18,9 @@
 #include "tests/support.hpp"
 
 using namespace loom;
+using test::shipped_database;
 
 namespace {
-
-const closure::Database& shipped_database() {
-  static const closure::Database db = closure::Database::load(closure::database_file(weave::default_rules_dir()));
-  return db;
-}
 
 std::vector<engine::Rule> rules_with_template() {
   auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);

@@ -1,8 +1,11 @@
 #include "src/closure/cavity.hpp"
 
 #include <algorithm>
+#include <bit>
 
 #include <fmt/format.h>
+
+#include "src/closure/hex_meeting.hpp"
 
 namespace loom::closure {
 
@@ -90,6 +93,27 @@ bool glued_front_is_proper(const QuadMap& before, const QuadsAtVertex& at, const
     }
   }
   return true;
+}
+
+bool touches_front_properly(const Hex& hex, const QuadMap& front, const QuadsAtVertex& at,
+                            const std::vector<std::uint32_t>& covered) {
+  bool ok = true;
+  for (std::uint32_t v : hex)
+    at.each(v, [&](std::uint32_t q) {
+      if (!ok || std::find(covered.begin(), covered.end(), q) != covered.end()) return;
+      const Quad& quad = front.quads[q];
+      std::uint8_t in_quad = 0, in_hex = 0;
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 8; ++j)
+          if (quad[static_cast<std::size_t>(i)] == hex[static_cast<std::size_t>(j)]) {
+            in_quad |= static_cast<std::uint8_t>(1u << i);
+            in_hex |= static_cast<std::uint8_t>(1u << j);
+          }
+      const int n = std::popcount(in_quad);
+      const bool quad_edge = in_quad == 0b0011 || in_quad == 0b0110 || in_quad == 0b1100 || in_quad == 0b1001;
+      if (n >= 3 || (n == 2 && !(quad_edge && is_hex_edge(in_hex)))) ok = false;
+    });
+  return ok;
 }
 
 }  // namespace loom::closure

@@ -70,4 +70,11 @@ private:
 /// opposite corners of a quad, no two quads with the same opposite corners.
 bool glued_front_is_proper(const quadmap::QuadMap& before, const QuadsAtVertex& at, const quadmap::GluedHex& glued);
 
+/// Whether `hex`, glued onto the front quads `covered`, meets every other
+/// front quad in no more than a vertex or an edge of both: the hex that later
+/// covers that quad from the cavity would meet `hex` there. Only quads at the
+/// hex's corners can fail.
+bool touches_front_properly(const Hex& hex, const quadmap::QuadMap& front, const QuadsAtVertex& at,
+                            const std::vector<std::uint32_t>& covered);
+
 }  // namespace loom::closure

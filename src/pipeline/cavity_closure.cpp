@@ -237,6 +237,27 @@ PulledBack without_hexes_on(const HexMesh& m, const std::vector<Quad>& front, st
   return out;
 }
 
+ClosedMesh mesh_of_closure(const QuadSurface& surface, const closure::ClosureResult& closed) {
+  if (!closed.closed) throw std::logic_error("mesh_of_closure: the search did not close the surface");
+  Builder b;
+  b.out.mesh.points = surface.points;
+  b.placed.assign(surface.points.size(), true);
+  b.reserve_points(closed.vertex_bound);
+  ClosureReport& report = b.out.report;
+  report.cavities = 1;
+  report.front_quads = surface.quads.size();
+  report.search = closed.stats;
+  report.seconds = closed.stats.seconds;
+  for (std::size_t i = 0; i < closed.hexes.size(); ++i) {
+    b.add(closed.hexes[i], closed.source[i]);
+    (closed.source[i] == HexSource::database ? report.database : report.searched) += 1;
+  }
+  b.estimate_positions();
+  b.out.on_boundary.assign(b.out.mesh.points.size(), false);
+  for (std::size_t p = 0; p < surface.points.size(); ++p) b.out.on_boundary[p] = true;
+  return std::move(b.out);
+}
+
 ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, const closure::Database* db,
                           const std::vector<fill::Cap>& caps, const closure::ClosureOptions& options,
                           const std::vector<HexSource>& woven_source) {

@@ -49,6 +49,11 @@ struct ClosedMesh {
   ClosureReport report;
 };
 
+/// The mesh of a search from the whole surface (closure::close_symmetric):
+/// its hexes over the surface's points and the new ones, which get first
+/// positions as close_cavities gives them, and its report by source.
+ClosedMesh mesh_of_closure(const QuadSurface& surface, const closure::ClosureResult& closed);
+
 /// What is left of a mesh after a pull-back (without_hexes_on).
 struct PulledBack {
   HexMesh mesh;

@@ -187,18 +187,37 @@ void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMe
 
 /// The search alone from the surface (the fill of what it leaves too, with
 /// `fill`); kept if it beats the mesh there is.
+/// A mesh a search from the surface closed, kept if it beats the mesh there is.
+void adopt_if_fewer(MeshingResult& r, ClosedMesh&& closed, const QuadSurface& surface) {
+  if (!closed.complete || (r.combinatorially_valid() && closed.mesh.hexes.size() >= hexes_before_layer(r))) return;
+  const ClosureReport report = closed.report;
+  Candidate c = placed_candidate(std::move(closed), surface);
+  if (!c.valid()) return;
+  adopt(r, std::move(c), "searched");
+  r.closure = report;
+}
+
 void search_from_surface(MeshingResult& r, const QuadSurface& surface, Resources& res, const MeshingOptions& options,
                          const closure::ClosureOptions& search, bool fill) {
   if (options.on_stage) options.on_stage("searching from the surface");
   try {
-    ClosedMesh closed = close_cavities(surface, HexMesh{surface.points, {}}, res.database(),
-                                       fill ? res.caps() : std::vector<fill::Cap>{}, search);
-    if (!closed.complete || (r.combinatorially_valid() && closed.mesh.hexes.size() >= hexes_before_layer(r))) return;
-    const ClosureReport report = closed.report;
-    Candidate c = placed_candidate(std::move(closed), surface);
-    if (!c.valid()) return;
-    adopt(r, std::move(c), "searched");
-    r.closure = report;
+    adopt_if_fewer(r,
+                   close_cavities(surface, HexMesh{surface.points, {}}, res.database(),
+                                  fill ? res.caps() : std::vector<fill::Cap>{}, search),
+                   surface);
+  } catch (const InputError& e) {
+    if (r.closure_failure.empty()) r.closure_failure = e.what();
+  }
+}
+
+/// The search in symmetric pairs; kept if it beats the mesh there is.
+void search_symmetric_pairs(MeshingResult& r, const QuadSurface& surface, Resources& res,
+                            const MeshingOptions& options) {
+  if (options.on_stage) options.on_stage("searching symmetric pairs");
+  try {
+    const closure::ClosureResult closed =
+        closure::close_symmetric(quadmap::from_surface(surface), res.database(), options.symmetric);
+    if (closed.closed) adopt_if_fewer(r, mesh_of_closure(surface, closed), surface);
   } catch (const InputError& e) {
     if (r.closure_failure.empty()) r.closure_failure = e.what();
   }
@@ -284,8 +303,12 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     if (small) {
       search_from_surface(r, surface, res, options,
                           budget(within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions), false);
-      // The wide search can only improve a mesh the run already has: when it
-      // runs out of memory (--max-memory), it gives way and that mesh stays.
+      // Still over the bound: first the search in symmetric pairs (16 439:
+      // 78 hexes to 68 in a minute), then the wide search. The wide search
+      // can only improve a mesh the run already has: when it runs out of
+      // memory (--max-memory), it gives way and that mesh stays.
+      if (surface.quads.size() <= kPublishedSmallQuads && !within_published_bound(r))
+        search_symmetric_pairs(r, surface, res, options);
       if (surface.quads.size() <= kPublishedSmallQuads && !within_published_bound(r)) try {
           search_from_surface(r, surface, res, options, options.wide_search, false);
         } catch (const std::bad_alloc&) {

@@ -24,6 +24,7 @@
 #include "src/check/validity.hpp"
 #include "src/closure/database.hpp"
 #include "src/closure/shelling_search.hpp"
+#include "src/closure/symmetric_search.hpp"
 #include "src/geometry/boundary_layer.hpp"
 #include "src/geometry/inversion_causes.hpp"
 #include "src/mesh/hex_mesh.hpp"
@@ -58,7 +59,8 @@ struct MeshingOptions {
   /// the weave of the attempt before it.
   std::function<void(std::size_t attempt, const engine::Strategy&, const weave::WeaveResult& previous)> before_attempt;
   /// Called as each stage starts: "weaving", "placing nodes", "closing
-  /// cavities", "searching from the surface", "filling the surface" (progress).
+  /// cavities", "searching from the surface", "searching symmetric pairs",
+  /// "filling the surface" (progress).
   std::function<void(const char* stage)> on_stage;
   Closure closure = Closure::none;
   /// The database file and the fill's caps directory, read when first needed.
@@ -67,6 +69,9 @@ struct MeshingOptions {
   /// The wide search a surface of at most 20 quads gets when the searches
   /// before it leave it over 72 hexes (mesh_surface.cpp has the figures).
   closure::ClosureOptions wide_search = wide_search_defaults();
+  /// The symmetric search such a surface gets first, when it has a symmetry
+  /// of order 2 (closure/symmetric_search.hpp).
+  closure::SymmetricOptions symmetric;
 };
 
 struct MeshingResult {
