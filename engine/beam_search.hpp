@@ -6,6 +6,7 @@
 // first) make the next level. A key seen at any earlier level is not kept
 // again. Goals are recorded when generated, as in best_first_search, and a
 // state that cannot beat the best goal by its lower bound is dropped.
+// `closest` is the first state of the last level kept.
 //
 // Where best-first search spends its budget round the cheapest states, a beam
 // goes deep along a few: the shape of search that suits an expensive
@@ -48,25 +49,12 @@ SearchOutcome<typename Space::State> beam_search(Space& space, typename Space::S
   for (std::size_t depth = 0; depth < limits.max_depth && !level.empty(); ++depth) {
     std::vector<Ranked> next;
     auto emit = [&](State&& s) {
-      ++out.stats.generated;
-      const double g = space.cost(s);
-      if (space.goal(s)) {
-        ++out.stats.goals;
-        if (g < best_goal) {
-          best_goal = g;
-          out.goal = std::move(s);
-        }
-        return;
-      }
-      if (g + space.lower_bound(s) >= best_goal) {
-        ++out.stats.pruned;
-        return;
-      }
+      if (goal_or_pruned(space, s, best_goal, out)) return;
       if (!seen.insert(space.key(s)).second) {
         ++out.stats.merged;
         return;
       }
-      const double priority = g + limits.weight * space.estimate(s);
+      const double priority = space.cost(s) + limits.weight * space.estimate(s);
       next.push_back({priority, out.stats.generated, std::move(s)});
     };
     for (const State& s : level) {

@@ -54,6 +54,28 @@ struct SearchOutcome {
   SearchStats stats;
 };
 
+/// What both searches do with a state just generated: count it, record it if
+/// it is a goal cheaper than `best_goal`, and drop it if it cannot beat that
+/// goal by its lower bound. True when the state went no further.
+template <class Space, class State>
+bool goal_or_pruned(Space& space, State& s, double& best_goal, SearchOutcome<State>& out) {
+  ++out.stats.generated;
+  const double g = space.cost(s);
+  if (space.goal(s)) {
+    ++out.stats.goals;
+    if (g < best_goal) {
+      best_goal = g;
+      out.goal = std::move(s);
+    }
+    return true;
+  }
+  if (g + space.lower_bound(s) >= best_goal) {
+    ++out.stats.pruned;
+    return true;
+  }
+  return false;
+}
+
 template <class Space>
 SearchOutcome<typename Space::State> best_first_search(Space& space, typename Space::State start,
                                                        const SearchLimits& limits) {
@@ -73,20 +95,8 @@ SearchOutcome<typename Space::State> best_first_search(Space& space, typename Sp
   double best_goal = std::numeric_limits<double>::infinity();
 
   auto push = [&](State&& s) {
-    ++out.stats.generated;
+    if (goal_or_pruned(space, s, best_goal, out)) return;
     const double g = space.cost(s);
-    if (space.goal(s)) {
-      ++out.stats.goals;
-      if (g < best_goal) {
-        best_goal = g;
-        out.goal = std::move(s);
-      }
-      return;
-    }
-    if (g + space.lower_bound(s) >= best_goal) {
-      ++out.stats.pruned;
-      return;
-    }
     auto [it, fresh] = best_cost.try_emplace(space.key(s), g);
     if (!fresh) {
       if (it->second <= g) {
