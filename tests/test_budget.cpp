@@ -53,7 +53,7 @@ TEST_CASE("--max-memory: the wide search gives way, and the mesh found before it
   CHECK_MESSAGE((r.status == 0 || r.status == 3), r.err);
   CHECK(r.out.find("searched: ") == 0);
   CHECK(r.err.find("loom: out of memory") == std::string::npos);
-  CHECK_MESSAGE(r.err.find("loom: note: the wide search (for a mesh within 72 hexes) stopped: out of memory;") !=
+  CHECK_MESSAGE(r.err.find("loom: note: the last searches for a mesh within 72 hexes stopped: out of memory;") !=
                     std::string::npos,
                 r.err);
   CHECK(std::filesystem::exists(dir / "out.vtk"));

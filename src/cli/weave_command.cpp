@@ -237,8 +237,8 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
     std::cout << fmt::format("woven: {} hex{} in {} steps ({}){}{}; {}\n", hexes, hexes == 1 ? "" : "es",
                              result.weave.steps, counts, attempt, layer, quality);
   if (!result.wide_search_stopped.empty())
-    std::cerr << fmt::format("loom: note: the wide search (for a mesh within 72 hexes) stopped: {}; the mesh found "
-                             "before it is written; raise --max-memory to let it finish\n",
+    std::cerr << fmt::format("loom: note: the last searches for a mesh within 72 hexes stopped: {}; the mesh found "
+                             "before them is written; raise --max-memory to let them finish\n",
                              result.wide_search_stopped);
   if (const std::string note = loom::centre_note(q); !note.empty())
     std::cerr << "loom: warning: criterion 7 holds" << note << "\n";

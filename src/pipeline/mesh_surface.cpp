@@ -185,8 +185,6 @@ void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMe
   }
 }
 
-/// The search alone from the surface (the fill of what it leaves too, with
-/// `fill`); kept if it beats the mesh there is.
 /// A mesh a search from the surface closed, kept if it beats the mesh there is.
 void adopt_if_fewer(MeshingResult& r, ClosedMesh&& closed, const QuadSurface& surface) {
   if (!closed.complete || (r.combinatorially_valid() && closed.mesh.hexes.size() >= hexes_before_layer(r))) return;
@@ -197,6 +195,8 @@ void adopt_if_fewer(MeshingResult& r, ClosedMesh&& closed, const QuadSurface& su
   r.closure = report;
 }
 
+/// The search alone from the surface (the fill of what it leaves too, with
+/// `fill`); kept if it beats the mesh there is.
 void search_from_surface(MeshingResult& r, const QuadSurface& surface, Resources& res, const MeshingOptions& options,
                          const closure::ClosureOptions& search, bool fill) {
   if (options.on_stage) options.on_stage("searching from the surface");
@@ -304,13 +304,12 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
       search_from_surface(r, surface, res, options,
                           budget(within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions), false);
       // Still over the bound: first the search in symmetric pairs (16 439:
-      // 78 hexes to 68 in a minute), then the wide search. The wide search
-      // can only improve a mesh the run already has: when it runs out of
-      // memory (--max-memory), it gives way and that mesh stays.
-      if (surface.quads.size() <= kPublishedSmallQuads && !within_published_bound(r))
-        search_symmetric_pairs(r, surface, res, options);
+      // 78 hexes to 68 in a minute), then the wide search. They can only
+      // improve a mesh the run already has: when one runs out of memory
+      // (--max-memory), it gives way and that mesh stays.
       if (surface.quads.size() <= kPublishedSmallQuads && !within_published_bound(r)) try {
-          search_from_surface(r, surface, res, options, options.wide_search, false);
+          search_symmetric_pairs(r, surface, res, options);
+          if (!within_published_bound(r)) search_from_surface(r, surface, res, options, options.wide_search, false);
         } catch (const std::bad_alloc&) {
           if (!r.combinatorially_valid()) throw;
           r.wide_search_stopped = "out of memory";

@@ -91,8 +91,8 @@ struct MeshingResult {
   ClosureReport closure;                 ///< of the cavity closure, when it ran
   std::string closure_failure;           ///< why it gave no mesh, when it ran and did not
   std::string fill_failure;              ///< why the whole-surface fill could not run
-  /// Why the wide search stopped before its budget ("" when it did not run or
-  /// ran to its end): the run keeps the mesh it had.
+  /// Why the symmetric or the wide search stopped before its budget ("" when
+  /// neither ran, or both ran to their end): the run keeps the mesh it had.
   std::string wide_search_stopped;
   /// Of `mesh` as returned: why each inverted hex is (once, for the warning
   /// line, the report and the cell field).
