@@ -130,6 +130,9 @@ public:
         next.code = quadmap::canonical_unoriented(next.cavity.front).code;
         if (!reached_.insert(next.code).second) continue;  // reached before, with no more hexes
         ClosureResult inner = close_cavity(next.cavity, db_, options_.each);
+        inner_.expanded += inner.stats.expanded;
+        inner_.generated += inner.stats.generated;
+        inner_.peak_open = std::max(inner_.peak_open, inner.stats.peak_open);
         if (inner.closed) {
           next.inner_closed = true;
           next.rest = std::move(inner.hexes);
@@ -141,6 +144,9 @@ public:
         emit(std::move(next));
       }
   }
+
+  /// The inner searches' expansions, states and most open states, summed.
+  const engine::SearchStats& inner() const { return inner_; }
 
 private:
   static constexpr double kNotClosed = 1000;
@@ -179,6 +185,7 @@ private:
   const SymmetricOptions& options_;
   std::size_t max_front_;
   std::unordered_set<quadmap::Code, quadmap::CodeHash> reached_;
+  engine::SearchStats inner_;
 };
 
 }  // namespace
@@ -195,11 +202,11 @@ ClosureResult close_symmetric(const QuadMap& surface, const Database* db, const 
   for (const Permutation& symmetry : quadmap::up_to_conjugacy(involutions, group)) {
     PairSpace space(db, options, max_front);
     auto outcome = engine::beam_search(space, space.start(surface, symmetry), options.beam);
-    best.stats.expanded += outcome.stats.expanded;
-    best.stats.generated += outcome.stats.generated;
+    best.stats.expanded += outcome.stats.expanded + space.inner().expanded;
+    best.stats.generated += outcome.stats.generated + space.inner().generated;
     best.stats.goals += outcome.stats.goals;
     best.stats.seconds += outcome.stats.seconds;
-    best.stats.peak_open = std::max(best.stats.peak_open, outcome.stats.peak_open);
+    best.stats.peak_open = std::max({best.stats.peak_open, outcome.stats.peak_open, space.inner().peak_open});
     if (!outcome.goal) continue;
     const auto& goal = *outcome.goal;
     const std::size_t hexes = goal.cavity.hexes.size() + goal.rest.size();

@@ -36,7 +36,8 @@ struct SymmetricOptions {
 /// The fewest hexes found over every class of symmetries of order 2 (not
 /// closed when the surface has none, or no front reached was closed). Hexes
 /// are numbered as close_cavity numbers them: new vertices from the
-/// surface's vertex_bound on. `stats` sums the beams'.
+/// surface's vertex_bound on. `stats` sums the beams' and their inner
+/// searches' (expansions, states), so its rates compare with close_cavity's.
 ClosureResult close_symmetric(const quadmap::QuadMap& surface, const Database* db, const SymmetricOptions& options);
 
 }  // namespace loom::closure
