@@ -205,6 +205,12 @@ void add_up(ClosureReport& total, const ClosureReport& round) {
   total.search.peak_open = std::max(total.search.peak_open, round.search.peak_open);
 }
 
+// The surface's points come first in every mesh closure builds.
+void mark_surface_points(ClosedMesh& out, std::size_t surface_points) {
+  out.on_boundary.assign(out.mesh.points.size(), false);
+  std::fill_n(out.on_boundary.begin(), surface_points, true);
+}
+
 }  // namespace
 
 PulledBack without_hexes_on(const HexMesh& m, const std::vector<Quad>& front, std::size_t keep_points) {
@@ -253,8 +259,7 @@ ClosedMesh mesh_of_closure(const QuadSurface& surface, const closure::ClosureRes
     (closed.source[i] == HexSource::database ? report.database : report.searched) += 1;
   }
   b.estimate_positions();
-  b.out.on_boundary.assign(b.out.mesh.points.size(), false);
-  for (std::size_t p = 0; p < surface.points.size(); ++p) b.out.on_boundary[p] = true;
+  mark_surface_points(b.out, surface.points.size());
   return std::move(b.out);
 }
 
@@ -301,8 +306,7 @@ ClosedMesh close_cavities(const QuadSurface& surface, const HexMesh& woven, cons
   // Counted by source, since a pull-back renumbers the points the hexes use.
   report.peeled = static_cast<std::size_t>(std::count(given_source.begin(), given_source.end(),
                                                       HexSource::woven)) - report.woven;
-  out.on_boundary.assign(out.mesh.points.size(), false);
-  for (std::size_t p = 0; p < surface.points.size(); ++p) out.on_boundary[p] = true;
+  mark_surface_points(out, surface.points.size());
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
