@@ -14,6 +14,7 @@
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_parser.hpp"
 #include "src/check/quality_histogram.hpp"
+#include "src/check/surface_angle_bound.hpp"
 #include "src/check/validity.hpp"
 #include "src/check/verdict.hpp"
 #include "src/cli/weave_report.hpp"
@@ -112,6 +113,12 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
   options.weave.check_rules = checked_rules(o, rules);
   RunBudget budget(o.max_seconds, o.max_memory, o.progress);
   loom::QuadSurface surface = surface_of(budget);
+  const loom::SurfaceAngleBound bound = loom::surface_angle_bound(surface);
+  if (bound.quads_below_0_2 > 0)
+    std::cerr << fmt::format("loom: note: {} quad{} of the surface ha{} a corner angle whose sine is below 0.2 (the "
+                             "least {:.3f}): no hex mesh bounded by it has every scaled Jacobian above {:.3f}\n",
+                             bound.quads_below_0_2, bound.quads_below_0_2 == 1 ? "" : "s",
+                             bound.quads_below_0_2 == 1 ? "s" : "ve", bound.least_sine, bound.least_sine);
   options.attempts = o.attempts;
   options.closure = o.closure;
   options.database = loom::closure::database_file(loom::weave::default_rules_dir());
@@ -163,8 +170,13 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
   budget.commit();
 
   // Diagnostics describe the run whatever its outcome; the mesh is written only on success.
-  if (!o.report.empty())
-    loom::write_text_atomically(o.report, report_json(o.input, result).dump(2) + "\n");
+  if (!o.report.empty()) {
+    nlohmann::json report = report_json(o.input, result);
+    report["surface_angle_bound"] = {{"least_sine", bound.least_sine},
+                                     {"mean_sine", bound.mean_sine},
+                                     {"quads_below_0_2", bound.quads_below_0_2}};
+    loom::write_text_atomically(o.report, report.dump(2) + "\n");
+  }
   loom::stc::PictureFailures pictures = steps ? steps->picture_failures() : loom::stc::PictureFailures{};
   const std::size_t svg_limit = o.no_svg ? 0 : 4000;
   if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir, pictures, svg_limit);
