@@ -64,6 +64,27 @@ TEST_CASE("cad part: the bundled bracket, as .geo and as STEP, becomes an even c
   CHECK(again.surface.quads == geo.surface.quads);
 }
 
+TEST_CASE("cad part: the other bundled parts become even closed quad surfaces of their genus") {
+  struct Part {
+    const char* file;
+    int faces;
+    int genus;
+  };
+  // A ball; a flange (a hub on a disc, a bore and four bolt holes); a filleted
+  // tee of two bars; an angle of two thin walls, filleted, a hole in each.
+  for (const Part& p : {Part{"sphere.geo", 1, 0}, Part{"flange.geo", 10, 5}, Part{"tee.geo", 7, 0},
+                        Part{"wall.geo", 11, 2}}) {
+    CAPTURE(p.file);
+    const auto part = cad::quad_surface_of_part(examples / p.file, std::nullopt);
+    CHECK(part.faces == p.faces);
+    CHECK(part.surface.quads.size() % 2 == 0);
+    QuadSurface s = part.surface;
+    const SurfaceSummary summary = validate_surface(s, p.file);
+    CHECK(summary.genus == p.genus);
+    CHECK(!summary.flipped);
+  }
+}
+
 TEST_CASE("cad part: what is not one readable solid is refused with one line") {
   ScratchDir dir("cad-refused");
   auto refused = [&](const std::string& name, const std::string& text, std::optional<double> size = std::nullopt) {
