@@ -1,6 +1,7 @@
 // bench_untangle: the global untangler (src/geometry/untangle.hpp) in figures.
 //
 //   bench_untangle [--sizes 10,20,30,46] [--scramble S] [--seed N] [--quads A-B]
+//                  [--mesh FILE [--optimize] [--layers N]]
 //
 // Speed: n x n x n hex grids whose interior nodes are thrown up to S cell
 // lengths away (the boundary fixed), untangled; seconds per 10^5 hexes,
@@ -8,7 +9,10 @@
 // every 3-connected quadrangulation with A..B quads (cavity closure and search
 // included), and how many of its meshes come out with every scaled Jacobian
 // above 0 (criterion 7), with the untangler's rounds. Figures, not a test: the
-// machine is shared, compare within one run.
+// machine is shared, compare within one run. A given mesh (--mesh): untangled,
+// or with --optimize placed as loom weave places (every hex below 1 improved),
+// after --layers N boundary layers; quality before and after.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <random>
@@ -20,9 +24,12 @@
 #include "bench/bench_options.hpp"
 #include "engine/rule_compiler.hpp"
 #include "src/check/hex_boundary.hpp"
+#include "src/check/validity.hpp"
 #include "src/closure/database.hpp"
 #include "src/fill/cap.hpp"
 #include "src/gen/generators.hpp"
+#include "src/geometry/boundary_layer.hpp"
+#include "src/geometry/placement.hpp"
 #include "src/geometry/untangle.hpp"
 #include "src/io/hex_io.hpp"
 #include "src/pipeline/mesh_surface.hpp"
@@ -55,21 +62,67 @@ void speed(const std::vector<int>& sizes, double scramble, std::uint64_t seed) {
   }
 }
 
-/// Each mesh file untangled with its boundary nodes fixed, as placement's
-/// phase 3 would, with the budget given: does a longer run untangle more?
-void files(const std::vector<std::string>& paths, const geometry::UntangleOptions& options) {
+struct Quality {
+  double min = 1, mean = 0;
+  std::size_t below_zero = 0, below_0_2 = 0;
+};
+
+Quality quality_of(const HexMesh& mesh) {
+  Quality q;
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+    const double s = scaled_jacobian(mesh, h);
+    q.min = std::min(q.min, s);
+    q.mean += s;
+    q.below_zero += s <= 0;
+    q.below_0_2 += s < 0.2;
+  }
+  if (!mesh.hexes.empty()) q.mean /= static_cast<double>(mesh.hexes.size());
+  return q;
+}
+
+std::string quality_cell(const Quality& q) {
+  return fmt::format("{:.3f} / {:.3f}, {}, {}", q.min, q.mean, q.below_zero, q.below_0_2);
+}
+
+/// What to do to each --mesh file, its boundary nodes fixed.
+struct FileRun {
+  geometry::UntangleOptions untangle;
+  bool optimize = false;  ///< the whole placement, every hex improved, instead of the untangler alone
+  int layers = 0;         ///< boundary layers pillowed first
+};
+
+/// Each mesh file untangled (or optimized) from its written positions: does a
+/// longer run untangle more, and how far can placement raise the quality of a
+/// given connectivity? Quality is min / mean scaled Jacobian, hexes <= 0, < 0.2.
+void files(const std::vector<std::string>& paths, const FileRun& run) {
   if (paths.empty()) return;
-  std::printf("\n| mesh | hexes | inverted before | inverted after | rounds | L-BFGS iterations | seconds |\n"
-              "|---|---|---|---|---|---|---|\n");
+  std::printf("\n| mesh | hexes | layers | before | after | rounds | seconds |\n|---|---|---|---|---|---|---|\n");
   for (const auto& path : paths) {
     HexMesh mesh = read_hex_mesh(path);
     std::vector<std::uint32_t> boundary;
     hex_mesh_boundary(mesh, &boundary);
     std::vector<bool> fixed(mesh.points.size(), false);
     for (std::uint32_t v : boundary) fixed[v] = true;
-    const geometry::UntangleReport r = geometry::untangle(mesh, fixed, options);
-    std::printf("| %s | %zu | %zu | %zu | %d | %d | %.1f |\n", path.c_str(), mesh.hexes.size(), r.inverted_before,
-                r.inverted_after, r.rounds, r.iterations, r.seconds);
+    const Quality before = quality_of(mesh);
+    for (int i = 0; i < run.layers; ++i) geometry::pillow_boundary_layer(mesh, fixed);
+    int rounds = 0;
+    double seconds = 0;
+    if (run.optimize) {
+      geometry::PlacementOptions options;
+      options.improve_below = 1.0;
+      // The copies of a new layer sit on the surface: start from the harmonic placement.
+      options.start = run.layers > 0 ? geometry::PlacementOptions::Start::harmonic
+                                     : geometry::PlacementOptions::Start::input;
+      const geometry::PlacementReport r = geometry::place_nodes(mesh, fixed, options);
+      rounds = r.global_rounds;
+      seconds = r.seconds;
+    } else {
+      const geometry::UntangleReport r = geometry::untangle(mesh, fixed, run.untangle);
+      rounds = r.rounds;
+      seconds = r.seconds;
+    }
+    std::printf("| %s | %zu | %d | %s | %s | %d | %.1f |\n", path.c_str(), mesh.hexes.size(), run.layers,
+                quality_cell(before).c_str(), quality_cell(quality_of(mesh)).c_str(), rounds, seconds);
     std::fflush(stdout);
   }
 }
@@ -119,13 +172,16 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "of the scrambling (default 1)");
   app.add_option("--quads", quads, "3-connected quadrangulations with A-B quads for the success rate ('' for none; default 6-12)");
   std::vector<std::string> meshes;
-  loom::geometry::UntangleOptions options;
+  FileRun run;
   app.add_option("--mesh", meshes, "also untangle these hex mesh files, boundary fixed (repeatable)");
-  app.add_option("--rounds", options.max_rounds, "with --mesh: the untangler's most rounds");
-  app.add_option("--patience", options.patience, "with --mesh: rounds without progress before it gives up");
-  app.add_option("--lambda", options.lambda, "with --mesh: weight of the volume term");
+  app.add_option("--rounds", run.untangle.max_rounds, "with --mesh: the untangler's most rounds");
+  app.add_option("--patience", run.untangle.patience, "with --mesh: rounds without progress before it gives up");
+  app.add_option("--lambda", run.untangle.lambda, "with --mesh: weight of the volume term");
+  app.add_flag("--optimize", run.optimize,
+               "with --mesh: run the whole placement (untangling, then quality) on every hex below 1 instead");
+  app.add_option("--layers", run.layers, "with --mesh: pillow this many boundary layers first")->check(CLI::NonNegativeNumber);
   loom::bench::parse_or_exit(app, argc, argv);
-  files(meshes, options);
+  files(meshes, run);
   speed(loom::bench::parse_counts(sizes), scramble, seed);
   success(loom::bench::parse_counts(quads));
   return 0;

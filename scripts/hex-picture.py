@@ -1,10 +1,12 @@
 #!/usr/bin/python3
-"""Cut-away picture of a Loom hex mesh as SVG, hexes coloured by their source.
+"""Cut-away picture of a Loom hex mesh as SVG, hexes coloured by their source or quality.
 
     /usr/bin/python3 scripts/hex-picture.py MESH.vtk PICTURE.svg|PICTURE.png [--axis x|y|z] [--keep 0.5]
+        [--colour source|quality]
 
-Reads the legacy ASCII .vtk that `loom weave` writes (its `source` cell field:
-0 woven, 1 searched, 2 database, 3 filled, 4 pillow), keeps the hexes whose
+Reads the legacy ASCII .vtk that `loom weave` writes: its `source` cell field
+(0 woven, 1 searched, 2 database, 3 filled, 4 pillow) or, with --colour quality,
+its `scaled_jacobian` field in five bands (<= 0, below 0.2, 0.5, 0.8, and above). It keeps the hexes whose
 centre lies in the given fraction of the hex centres' extent along the axis, on the
 side away from the viewer, and draws the faces that bound that set, farthest
 first, seen from a fixed oblique direction (from low x and y, from above). Plain Python, no modules beyond the standard library, so that it
@@ -19,6 +21,12 @@ import zlib
 
 COLOURS = {0: (70, 130, 180), 1: (230, 150, 40), 2: (90, 170, 90), 3: (200, 60, 60), 4: (170, 170, 170)}
 NAMES = {0: "woven", 1: "searched", 2: "database", 3: "filled", 4: "pillow"}
+QUALITY_COLOURS = {0: (200, 40, 40), 1: (240, 150, 40), 2: (230, 210, 80), 3: (140, 190, 110), 4: (70, 130, 180)}
+QUALITY_NAMES = {0: "SJ <= 0", 1: "0 - 0.2", 2: "0.2 - 0.5", 3: "0.5 - 0.8", 4: ">= 0.8"}
+
+
+def quality_band(sj):
+    return 0 if sj <= 0 else 1 if sj < 0.2 else 2 if sj < 0.5 else 3 if sj < 0.8 else 4
 FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
 
 
@@ -27,7 +35,7 @@ def fail(message):
     sys.exit(2)
 
 
-def read_vtk(path):
+def read_vtk(path, field):
     try:
         tokens = open(path).read().split()
     except OSError as e:
@@ -58,11 +66,15 @@ def read_vtk(path):
         at += 9
     if not cells:
         fail(f"{path}: no hexes to draw")
-    source = [0] * len(cells)
-    if "source" in tokens:
+    if field == "source":
+        if "source" not in tokens:
+            return points, cells, [0] * len(cells)
         s = tokens.index("source") + 5  # source int 1 LOOKUP_TABLE default
-        source = [int(t) for t in tokens[s: s + len(cells)]]
-    return points, cells, source
+        return points, cells, [int(t) for t in tokens[s: s + len(cells)]]
+    if "scaled_jacobian" not in tokens:
+        fail(f"{path}: no scaled_jacobian cell field; give a .vtk that loom weave or loom mesh wrote")
+    s = tokens.index("scaled_jacobian") + 5
+    return points, cells, [quality_band(float(t)) for t in tokens[s: s + len(cells)]]
 
 
 def write_png(path, width, height, polygons):
@@ -102,9 +114,11 @@ def main():
     ap.add_argument("picture", help="PICTURE.png or PICTURE.svg")
     ap.add_argument("--axis", choices="xyz", default="x")
     ap.add_argument("--keep", type=float, default=0.5, help="fraction of the extent kept (default 0.5)")
+    ap.add_argument("--colour", choices=("source", "quality"), default="source")
     a = ap.parse_args()
+    colours, names = (COLOURS, NAMES) if a.colour == "source" else (QUALITY_COLOURS, QUALITY_NAMES)
     try:
-        points, cells, source = read_vtk(a.mesh)
+        points, cells, source = read_vtk(a.mesh, a.colour)
     except (ValueError, IndexError):
         fail(f"{a.mesh}: a number is missing or malformed; give a legacy ASCII .vtk that loom weave wrote")
     axis = "xyz".index(a.axis)
@@ -150,7 +164,7 @@ def main():
         return tuple(int(x * light) for x in rgb)
 
     drawn.sort(key=lambda d: sum(projected[v][2] for v in d[0]))
-    polygons = [([screen(v) for v in quad], shade_rgb(quad, COLOURS.get(s, (0, 0, 0)))) for quad, s in drawn]
+    polygons = [([screen(v) for v in quad], shade_rgb(quad, colours.get(s, (0, 0, 0)))) for quad, s in drawn]
     tmp = a.picture + ".tmp"
     if a.picture.endswith(".png"):
         write_png(tmp, int(size), int(size), polygons)
@@ -162,8 +176,8 @@ def main():
             fill = "#{:02x}{:02x}{:02x}".format(*rgb)
             out.append(f'<polygon points="{pts}" fill="{fill}" stroke="black" stroke-width="0.4"/>')
         x = margin
-        for s, name in NAMES.items():
-            fill = "#{:02x}{:02x}{:02x}".format(*COLOURS[s])
+        for s, name in names.items():
+            fill = "#{:02x}{:02x}{:02x}".format(*colours[s])
             out.append(f'<rect x="{x:.0f}" y="{size + 8:.0f}" width="14" height="14" fill="{fill}"/>')
             out.append(f'<text x="{x + 18:.0f}" y="{size + 20:.0f}" font-family="sans-serif" '
                        f'font-size="13">{name} {source.count(s)}</text>')
