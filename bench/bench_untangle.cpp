@@ -12,7 +12,6 @@
 // machine is shared, compare within one run. A given mesh (--mesh): untangled,
 // or with --optimize placed as loom weave places (every hex below 1 improved),
 // after --layers N boundary layers; quality before and after.
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <random>
@@ -24,6 +23,7 @@
 #include "bench/bench_options.hpp"
 #include "engine/rule_compiler.hpp"
 #include "src/check/hex_boundary.hpp"
+#include "src/check/criteria.hpp"
 #include "src/check/validity.hpp"
 #include "src/closure/database.hpp"
 #include "src/fill/cap.hpp"
@@ -62,26 +62,15 @@ void speed(const std::vector<int>& sizes, double scramble, std::uint64_t seed) {
   }
 }
 
-struct Quality {
-  double min = 1, mean = 0;
-  std::size_t below_zero = 0, below_0_2 = 0;
-};
-
-Quality quality_of(const HexMesh& mesh) {
-  Quality q;
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-    const double s = scaled_jacobian(mesh, h);
-    q.min = std::min(q.min, s);
-    q.mean += s;
-    q.below_zero += s <= 0;
-    q.below_0_2 += s < 0.2;
-  }
-  if (!mesh.hexes.empty()) q.mean /= static_cast<double>(mesh.hexes.size());
+QualitySummary quality_of(const HexMesh& mesh) {
+  QualitySummary q;
+  criteria::positive_scaled_jacobian(mesh, q);
   return q;
 }
 
-std::string quality_cell(const Quality& q) {
-  return fmt::format("{:.3f} / {:.3f}, {}, {}", q.min, q.mean, q.below_zero, q.below_0_2);
+std::string quality_cell(const QualitySummary& q) {
+  return fmt::format("{:.3f} / {:.3f}, {}, {}", q.min_scaled_jacobian, q.mean_scaled_jacobian, q.below_zero,
+                     q.below_0_2);
 }
 
 /// What to do to each --mesh file, its boundary nodes fixed.
@@ -103,7 +92,7 @@ void files(const std::vector<std::string>& paths, const FileRun& run) {
     hex_mesh_boundary(mesh, &boundary);
     std::vector<bool> fixed(mesh.points.size(), false);
     for (std::uint32_t v : boundary) fixed[v] = true;
-    const Quality before = quality_of(mesh);
+    const QualitySummary before = quality_of(mesh);
     for (int i = 0; i < run.layers; ++i) geometry::pillow_boundary_layer(mesh, fixed);
     int rounds = 0;
     double seconds = 0;
