@@ -3,6 +3,6 @@ SetFactory("OpenCASCADE");
 Cylinder(1) = {-30, 0, 0, 60, 0, 0, 8};
 Cylinder(2) = {0, 0, 0, 0, 0, 28, 6};
 body() = BooleanUnion{ Volume{1}; Delete; }{ Volume{2}; Delete; };
-// the two circles where the bars meet
+// the curve where the upright meets the bar
 e() = Curve In BoundingBox{-7, -7, 4, 7, 7, 9};
 part() = Fillet{body(0)}{e()}{3};

@@ -23,11 +23,11 @@ COLOURS = {0: (70, 130, 180), 1: (230, 150, 40), 2: (90, 170, 90), 3: (200, 60, 
 NAMES = {0: "woven", 1: "searched", 2: "database", 3: "filled", 4: "pillow"}
 QUALITY_COLOURS = {0: (200, 40, 40), 1: (240, 150, 40), 2: (230, 210, 80), 3: (140, 190, 110), 4: (70, 130, 180)}
 QUALITY_NAMES = {0: "SJ <= 0", 1: "0 - 0.2", 2: "0.2 - 0.5", 3: "0.5 - 0.8", 4: ">= 0.8"}
+FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
 
 
 def quality_band(sj):
     return 0 if sj <= 0 else 1 if sj < 0.2 else 2 if sj < 0.5 else 3 if sj < 0.8 else 4
-FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
 
 
 def fail(message):
@@ -66,15 +66,17 @@ def read_vtk(path, field):
         at += 9
     if not cells:
         fail(f"{path}: no hexes to draw")
+    if field == "source" and "source" not in tokens:
+        return points, cells, [0] * len(cells)
+    if field not in tokens:
+        fail(f"{path}: no {field} cell field; give a .vtk that loom weave or loom mesh wrote")
+    s = tokens.index(field) + 5  # NAME TYPE 1 LOOKUP_TABLE default
+    values = tokens[s: s + len(cells)]
+    if len(values) != len(cells):
+        fail(f"{path}: the {field} field has {len(values)} values for {len(cells)} hexes; the file is damaged")
     if field == "source":
-        if "source" not in tokens:
-            return points, cells, [0] * len(cells)
-        s = tokens.index("source") + 5  # source int 1 LOOKUP_TABLE default
-        return points, cells, [int(t) for t in tokens[s: s + len(cells)]]
-    if "scaled_jacobian" not in tokens:
-        fail(f"{path}: no scaled_jacobian cell field; give a .vtk that loom weave or loom mesh wrote")
-    s = tokens.index("scaled_jacobian") + 5
-    return points, cells, [quality_band(float(t)) for t in tokens[s: s + len(cells)]]
+        return points, cells, [int(t) for t in values]
+    return points, cells, [quality_band(float(t)) for t in values]
 
 
 def write_png(path, width, height, polygons):
@@ -118,7 +120,7 @@ def main():
     a = ap.parse_args()
     colours, names = (COLOURS, NAMES) if a.colour == "source" else (QUALITY_COLOURS, QUALITY_NAMES)
     try:
-        points, cells, source = read_vtk(a.mesh, a.colour)
+        points, cells, source = read_vtk(a.mesh, "source" if a.colour == "source" else "scaled_jacobian")
     except (ValueError, IndexError):
         fail(f"{a.mesh}: a number is missing or malformed; give a legacy ASCII .vtk that loom weave wrote")
     axis = "xyz".index(a.axis)

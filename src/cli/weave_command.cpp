@@ -170,13 +170,8 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
   budget.commit();
 
   // Diagnostics describe the run whatever its outcome; the mesh is written only on success.
-  if (!o.report.empty()) {
-    nlohmann::json report = report_json(o.input, result);
-    report["surface_angle_bound"] = {{"least_sine", bound.least_sine},
-                                     {"mean_sine", bound.mean_sine},
-                                     {"quads_below_0_2", bound.quads_below_0_2}};
-    loom::write_text_atomically(o.report, report.dump(2) + "\n");
-  }
+  if (!o.report.empty())
+    loom::write_text_atomically(o.report, report_json(o.input, bound, result).dump(2) + "\n");
   loom::stc::PictureFailures pictures = steps ? steps->picture_failures() : loom::stc::PictureFailures{};
   const std::size_t svg_limit = o.no_svg ? 0 : 4000;
   if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir, pictures, svg_limit);

@@ -11,7 +11,7 @@
 
 namespace loom::cli {
 
-nlohmann::json report_json(const std::string& input, const pipeline::MeshingResult& r) {
+nlohmann::json report_json(const std::string& input, const SurfaceAngleBound& bound, const pipeline::MeshingResult& r) {
   const engine::Strategy& strategy = r.strategy;
   nlohmann::json j;
   j["input"] = input;
@@ -68,6 +68,8 @@ nlohmann::json report_json(const std::string& input, const pipeline::MeshingResu
       causes[geometry::cause_name(c)] = r.inversions.of(c);
     j["inversion_causes"] = causes;
   }
+  j["surface_angle_bound"] = {
+      {"least_sine", bound.least_sine}, {"mean_sine", bound.mean_sine}, {"quads_below_0_2", bound.quads_below_0_2}};
   j["boundary_layer_hexes"] = r.boundary_layer.hexes_added;
   j["smoothing_iterations"] = r.smoothing.iterations;
   j["match_attempts"] = r.weave.counters.match_attempts;

@@ -7,13 +7,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "src/check/surface_angle_bound.hpp"
 #include "src/io/cell_table.hpp"
 #include "src/pipeline/mesh_surface.hpp"
 
 namespace loom::cli {
 
-/// The report of a run on `input` (the path the user gave).
-nlohmann::json report_json(const std::string& input, const pipeline::MeshingResult& r);
+/// The report of a run on `input` (the path the user gave), whose surface has `bound`.
+nlohmann::json report_json(const std::string& input, const SurfaceAngleBound& bound, const pipeline::MeshingResult& r);
 
 /// Where each hex came from (0 woven, 1 searched, 2 database, 3 filled,
 /// 4 pillow), its scaled Jacobian (the minimum over its corners, as criterion 7
