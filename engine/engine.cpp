@@ -14,7 +14,10 @@ namespace loom::engine {
 Engine::Engine(Graph& graph, std::vector<Rule> rules, Actions actions, std::uint64_t seed)
     : g_(graph), rules_(std::move(rules)), actions_(std::move(actions)), matcher_(graph), state_(rules_.size()),
       rng_(seed) {
-  for (const Rule& r : rules_) check_actions(r, actions_, g_.schema());
+  for (Rule& r : rules_) {
+    check_actions(r, actions_, g_.schema());
+    bind_measures(r, actions_);
+  }
   index_relevance();
 }
 

@@ -1,6 +1,9 @@
 #include "engine/matcher.hpp"
 
 #include <algorithm>
+#include <array>
+
+#include <fmt/format.h>
 
 #include "engine/rule_arithmetic.hpp"
 
@@ -35,7 +38,28 @@ std::int64_t Matcher::evaluate(const CExpr& e, const Match& m) const {
       int s = slot_of(p, (e.index_var >= 0 ? m.indices[e.index_var] : 0) + e.offset);
       return s < 0 ? no_element : g_.at(el, e.port, static_cast<unsigned>(s));
     }
+    case Op::measure: return measure(e, m);
     default: return apply_operator(*m.rule, e, arg);
+  }
+}
+
+std::int64_t Matcher::measure(const CExpr& e, const Match& m) const {
+  const Rule& rule = *m.rule;
+  const RewriteOp& call = rule.measures[static_cast<std::size_t>(e.value)];
+  if (rule.measure_fns.size() != rule.measures.size())
+    throw RuleError(rule.file, call.pos,
+                    fmt::format("rule '{}': measure '{}' can only be evaluated by an engine that has the domain's measures",
+                                rule.name, call.action));
+  std::array<Id, max_measure_args> args{};
+  for (std::size_t i = 0; i < call.args.size(); ++i) args[i] = m.elements[call.args[i]];
+  try {
+    return (*rule.measure_fns[static_cast<std::size_t>(e.value)])(g_, std::span<const Id>(args.data(), call.args.size()));
+  } catch (const RuleError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& x) {
+    throw RuleError(rule.file, call.pos, fmt::format("rule '{}': measure '{}' failed: {}", rule.name, call.action, x.what()));
   }
 }
 

@@ -35,6 +35,8 @@ public:
 
 private:
   struct Search;
+  /// A measure call's value (Rule::measure_fns, bound by the Engine).
+  std::int64_t measure(const CExpr& e, const Match& m) const;
   const Graph& g_;
   mutable Match scratch_;
 };

@@ -104,29 +104,44 @@ void check_actions(const Rule& rule, const Actions& actions, const Schema& schem
     const std::string& noun = schema.kind(k).name;
     return (noun.find_first_of("aeiou") == 0 ? "an " : "a ") + noun;
   };
-  auto check = [&](const RewriteOp& op, bool is_test) {
-    const Actions::Entry* action = is_test ? actions.find_test(op.action) : actions.find(op.action);
-    if (!action)
-      throw RuleError(rule.file, op.pos, fmt::format("expected a known {}, found '{}'", is_test ? "test" : "action", op.action));
+  enum class Role { action, test, measure };
+  auto check = [&](const RewriteOp& op, Role role) {
+    const Actions::Entry* action = role == Role::test      ? actions.find_test(op.action)
+                                   : role == Role::measure ? actions.find_measure(op.action)
+                                                           : actions.find(op.action);
+    const char* what = role == Role::test ? "test" : role == Role::measure ? "measure" : "action";
+    if (!action) {
+      std::string known;
+      if (role == Role::measure)
+        for (const auto& [name, entry] : actions.measures()) known += (known.empty() ? " (known: " : ", ") + name;
+      if (!known.empty()) known += ")";
+      throw RuleError(rule.file, op.pos, fmt::format("expected a known {}, found '{}'{}", what, op.action, known));
+    }
     const auto& params = action->parameters;
     if (op.args.size() != params.size()) {
       std::string list;
       for (const ActionParameter& p : params)
         list += fmt::format("{}{} {}", list.empty() ? "" : ", ", schema.kind(p.kind).name, p.name);
-      throw RuleError(rule.file, op.pos, fmt::format("{} '{}' takes {} argument{} ({}), found {}", is_test ? "test" : "action", op.action,
+      throw RuleError(rule.file, op.pos, fmt::format("{} '{}' takes {} argument{} ({}), found {}", what, op.action,
                                                      params.size(), params.size() == 1 ? "" : "s", list, op.args.size()));
     }
     for (std::size_t i = 0; i < params.size(); ++i) {
       const Variable& arg = rule.vars[static_cast<std::size_t>(op.args[i])];
       if (arg.kind != params[i].kind)
         throw RuleError(rule.file, op.pos,
-                        fmt::format("argument {} of {} '{}' ({}) must be {}, found '{}', {}", i + 1, is_test ? "test" : "action", op.action,
+                        fmt::format("argument {} of {} '{}' ({}) must be {}, found '{}', {}", i + 1, what, op.action,
                                     params[i].name, kind(params[i].kind), arg.name, kind(arg.kind)));
     }
   };
   for (const RewriteOp& op : rule.rewrite)
-    if (op.kind == RewriteOp::Kind::call) check(op, false);
-  for (const RewriteOp& t : rule.tests) check(t, true);
+    if (op.kind == RewriteOp::Kind::call) check(op, Role::action);
+  for (const RewriteOp& t : rule.tests) check(t, Role::test);
+  for (const RewriteOp& m : rule.measures) check(m, Role::measure);
+}
+
+void bind_measures(Rule& rule, const Actions& actions) {
+  rule.measure_fns.clear();
+  for (const RewriteOp& m : rule.measures) rule.measure_fns.push_back(&actions.find_measure(m.action)->measure);
 }
 
 }  // namespace loom::engine

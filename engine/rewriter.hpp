@@ -39,23 +39,33 @@ public:
     std::vector<ActionParameter> parameters;
     Action run;   ///< an action's
     Test test;    ///< a test's
+    MeasureFn measure;  ///< a measure's
+    std::string unit;   ///< a measure's: what its integer counts, for messages and docs
   };
 
   void add(const std::string& name, std::vector<ActionParameter> parameters, Action action) {
-    actions_[name] = Entry{std::move(parameters), std::move(action), {}};
+    actions_[name] = Entry{std::move(parameters), std::move(action), {}, {}, {}};
   }
   void add_test(const std::string& name, std::vector<ActionParameter> parameters, Test test) {
-    tests_[name] = Entry{std::move(parameters), {}, std::move(test)};
+    tests_[name] = Entry{std::move(parameters), {}, std::move(test), {}, {}};
+  }
+  /// A measure rules may use in any expression (`if`, `where`, `order`):
+  /// an integer in `unit` (say "degrees", or "thousandths").
+  void add_measure(const std::string& name, std::vector<ActionParameter> parameters, std::string unit, MeasureFn measure) {
+    measures_[name] = Entry{std::move(parameters), {}, {}, std::move(measure), std::move(unit)};
   }
   const Entry* find(const std::string& name) const { return find_in(actions_, name); }
   const Entry* find_test(const std::string& name) const { return find_in(tests_, name); }
+  const Entry* find_measure(const std::string& name) const { return find_in(measures_, name); }
+  /// Every measure, by name.
+  const std::map<std::string, Entry>& measures() const { return measures_; }
 
 private:
   static const Entry* find_in(const std::map<std::string, Entry>& m, const std::string& name) {
     auto it = m.find(name);
     return it == m.end() ? nullptr : &it->second;
   }
-  std::map<std::string, Entry> actions_, tests_;
+  std::map<std::string, Entry> actions_, tests_, measures_;
 };
 
 /// Runs the rewrite of `m.rule` on `graph`. Afterwards `m.elements` holds the
@@ -73,5 +83,9 @@ bool passes_tests(Graph& graph, const Match& m, const Actions& actions);
 /// action or a test that `actions` does not have, or with the wrong number
 /// or kinds of arguments.
 void check_actions(const Rule& rule, const Actions& actions, const Schema& schema);
+
+/// Points each of the rule's measure calls at the domain's function (after
+/// check_actions, which holds them to their signatures).
+void bind_measures(Rule& rule, const Actions& actions);
 
 }  // namespace loom::engine

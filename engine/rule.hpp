@@ -3,7 +3,9 @@
 // a search plan (a sequence of operations walked from an anchor), and the
 // rewrite turned into a sequence of graph operations.
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -12,10 +14,19 @@
 
 namespace loom::engine {
 
+/// The most arguments a measure call may have.
+inline constexpr std::size_t max_measure_args = 16;
+
+/// A measure: an integer the domain computes from the elements of a match
+/// (a length, an angle, a quality, in the unit its registration documents).
+/// It reads the graph only, never changes it.
+using MeasureFn = std::function<std::int64_t(const Graph& graph, std::span<const Id> args)>;
+
 /// An integer or element expression over a match.
 struct CExpr {
   enum class Op {
     literal, none, element, index, attribute, port,
+    measure,  ///< Rule::measures[value] of the elements `args` name
     add, sub, mul, neg, max, min, eq, ne, lt, le, gt, ge, both, either, negate
   };
   Op op = Op::literal;
@@ -128,6 +139,12 @@ struct Rule {
   /// `test NAME(args)` of the main pattern: predicates the domain evaluates
   /// on a match the plan found (calls, in the order written).
   std::vector<RewriteOp> tests;
+  /// Measure calls in the rule's expressions (`NAME(args)`), in the order
+  /// compiled; CExpr::Op::measure names one by index.
+  std::vector<RewriteOp> measures;
+  /// The domain's function for each of `measures`, bound by the Engine that
+  /// runs the rule (bind_measures, rewriter.hpp); empty until then.
+  std::vector<const MeasureFn*> measure_fns;
   bool global = false;                   ///< uses a scan: any change may matter
 };
 

@@ -27,6 +27,7 @@ struct Expr {
     name,      ///< an element variable, an index variable, or an attribute of `self`
     attribute, ///< name.member
     port,      ///< name.member[index]
+    call,      ///< name(a, b, ...): a measure the domain registered; args are names
     add, sub, mul, neg, max, min,
     eq, ne, lt, le, gt, ge, both, either, negate
   };

@@ -212,12 +212,45 @@ private:
         c.offset = ix.offset;
         return c;
       }
+      case A::call: return measure(e, self, scope);
       default: {
         c.op = ops.at(e.op);
         for (const auto& a : e.args) c.args.push_back(expr(a, self, scope, pattern));
         return folded(std::move(c));
       }
     }
+  }
+
+  /// `NAME(a, b, ...)`: a call of a domain measure on element variables,
+  /// recorded in Rule::measures (checked against the domain's signatures when
+  /// an Engine binds them). A measure may read anything of its arguments, so
+  /// a change to any attribute of one re-queues the match.
+  CExpr measure(const ast::Expr& e, int self, int scope) {
+    if (e.args.size() > max_measure_args)
+      fail(e.pos, fmt::format("measure '{}' is given {} arguments; at most {} are allowed", e.name, e.args.size(),
+                              max_measure_args));
+    CExpr c;
+    c.pos = e.pos;
+    c.op = CExpr::Op::measure;
+    c.value = static_cast<std::int64_t>(r_.measures.size());
+    RewriteOp call;
+    call.kind = RewriteOp::Kind::call;
+    call.action = e.name;
+    call.pos = e.pos;
+    for (const ast::Expr& a : e.args) {
+      CExpr arg;
+      arg.pos = a.pos;
+      arg.op = CExpr::Op::element;
+      arg.var = a.name == "self" && self >= 0 ? self : var(a.name, a.pos, scope);
+      if (r_.vars[arg.var].created) fail(a.pos, fmt::format("measure '{}' cannot read '{}', which the rewrite makes", e.name, a.name));
+      Variable& v = r_.vars[arg.var];
+      for (AttrId attr : schema_.kind(v.kind).attributes)
+        if (std::find(v.attrs.begin(), v.attrs.end(), attr) == v.attrs.end()) v.attrs.push_back(attr);
+      call.args.push_back(arg.var);
+      c.args.push_back(std::move(arg));
+    }
+    r_.measures.push_back(std::move(call));
+    return c;
   }
 
   // An operator on literals becomes a literal, so that a constant expression

@@ -42,8 +42,9 @@ std::string expr_text(const Rule& r, const Schema& s, const CExpr& e) {
     case Op::neg: return "-" + arg(0);
     case Op::negate: return "not " + arg(0);
     case Op::max:
-    case Op::min: {
-      std::string t = e.op == Op::max ? "max(" : "min(";
+    case Op::min:
+    case Op::measure: {
+      std::string t = e.op == Op::max ? "max(" : e.op == Op::min ? "min(" : r.measures[static_cast<std::size_t>(e.value)].action + "(";
       for (std::size_t i = 0; i < e.args.size(); ++i) t += (i ? ", " : "") + arg(i);
       return t + ")";
     }

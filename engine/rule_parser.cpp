@@ -401,6 +401,21 @@ private:
       return e;
     }
     if (t.kind != Token::Kind::identifier) fail(t, "expected a number, a name, 'none', 'max(...)', 'min(...)' or '('");
+    if (is("(", 1)) {
+      e.op = Expr::Op::call;
+      e.name = name();
+      expect("(");
+      do {
+        Expr a;
+        a.pos = peek().pos;
+        a.op = Expr::Op::name;
+        a.name = name("a variable");
+        e.args.push_back(std::move(a));
+      } while (accept(","));
+      expect(")");
+      set_height(e, e.pos);
+      return e;
+    }
     e.op = Expr::Op::name;
     e.name = name();
     if (accept(".")) {

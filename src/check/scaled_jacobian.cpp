@@ -33,10 +33,12 @@ double corner_scaled_jacobian(const HexMesh& mesh, std::size_t hex, int corner) 
   const auto& n = kCornerEdges[static_cast<std::size_t>(corner)];
   for (int i : {corner, n[0], n[1], n[2]})
     if (nodes[static_cast<std::size_t>(i)] >= mesh.points.size()) return -1.0;
-  const Vec3& p = mesh.points[nodes[static_cast<std::size_t>(corner)]];
-  Vec3 e1 = mesh.points[nodes[static_cast<std::size_t>(n[0])]] - p;
-  Vec3 e2 = mesh.points[nodes[static_cast<std::size_t>(n[1])]] - p;
-  Vec3 e3 = mesh.points[nodes[static_cast<std::size_t>(n[2])]] - p;
+  auto at = [&](int i) -> const Vec3& { return mesh.points[nodes[static_cast<std::size_t>(i)]]; };
+  return corner_scaled_jacobian(at(corner), at(n[0]), at(n[1]), at(n[2]));
+}
+
+double corner_scaled_jacobian(const Vec3& corner, const Vec3& a, const Vec3& b, const Vec3& c) {
+  Vec3 e1 = a - corner, e2 = b - corner, e3 = c - corner;
   if (!normalize(e1) || !normalize(e2) || !normalize(e3)) return -1.0;
   const double value = dot(e1, cross(e2, e3));
   return std::isfinite(value) ? value : -1.0;

@@ -59,6 +59,10 @@ double scaled_jacobian(const HexMesh& mesh, std::size_t hex);
 /// The same at one corner (0..7, VTK order) of a hex.
 double corner_scaled_jacobian(const HexMesh& mesh, std::size_t hex, int corner);
 
+/// The same at a corner at `corner` whose edges run to a, b and c, in the
+/// order that makes a corner of a positive hex positive.
+double corner_scaled_jacobian(const Vec3& corner, const Vec3& a, const Vec3& b, const Vec3& c);
+
 /// The same at the centre, from the principal axes p1 - p0 + p2 - p3 + p5 -
 /// p4 + p6 - p7 and the like (Verdict's): <= 0 on a twisted hex whose corners
 /// may all be positive.

@@ -11,6 +11,7 @@
 #include "src/closure/database.hpp"
 #include "src/weave/database_closure.hpp"
 #include "src/weave/improper.hpp"
+#include "src/weave/measures.hpp"
 #include "src/weave/pillow.hpp"
 #include "src/weave/remove_hex.hpp"
 
@@ -79,6 +80,7 @@ Vec3 placed(const stc::Stc& stc, engine::Id node, const char* action) {
 
 engine::Actions weave_actions(stc::Stc& stc) {
   engine::Actions actions;
+  add_geometric_measures(actions, stc);
   const engine::KindId node = stc.ids().node, hex = stc.ids().hex;
   // place_hex_corner(n, v, a, b, c): n is the corner of the hex at v opposite
   // v, whose edges from v run to a, b and c: n = a + b + c - 2v.

@@ -60,7 +60,8 @@ struct WeaveResult {
 /// The rules shipped with Loom (the source tree's rules/, or $LOOM_RULES).
 std::filesystem::path default_rules_dir();
 
-/// The domain's named actions that rules may call (place_hex_corner).
+/// The domain's named actions, tests and measures that rules may use
+/// (place_hex_corner; measures.hpp: angle, corner_sj, ...).
 engine::Actions weave_actions(stc::Stc& stc);
 
 /// Weaves `stc` in place with `rules`.
