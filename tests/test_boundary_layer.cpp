@@ -130,5 +130,13 @@ TEST_CASE("loom weave says when it pillowed the boundary layer, and the report c
   CHECK(j["hex_sources"]["pillow"] == 192);
   CHECK(j["boundary_layer_hexes"] == 192);
   CHECK(j["below_zero"] == 0);
+  CHECK(j["quality_by_source"]["woven"]["hexes"] == 160);
+  CHECK(j["quality_by_source"]["pillow"]["hexes"] == 192);
+  CHECK(j["quality_by_source"]["pillow"]["inverted"] == 0);
+  CHECK(!j["quality_by_source"].contains("searched"));  // a source with no hexes is left out
+  // Woven core and layer: 80 interior edges of three hexes, every other one of four.
+  CHECK(j["interior_edge_valences"].size() == 2);
+  CHECK(j["interior_edge_valences"]["3"] == 80);
+  CHECK(j["irregular_interior_edges"] == 80);
   CHECK(loom::test::run_cli("check " + (dir / "c.vtk").string() + " --boundary " + (dir / "c.obj").string()).status == 0);
 }

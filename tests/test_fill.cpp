@@ -123,6 +123,17 @@ TEST_CASE("loom weave closes what no weave closes; --closure none (or --no-fill)
             j["hex_sources"]["database"].get<std::size_t>() + j["hex_sources"]["filled"].get<std::size_t>() +
             j["hex_sources"]["pillow"].get<std::size_t>() ==
         j["hexes"].get<std::size_t>());
+  // The quality per source adds up to the mesh's, and each source's histogram to its hexes.
+  std::size_t inverted = 0;
+  for (const auto& [name, q] : j["quality_by_source"].items()) {
+    CHECK(q["hexes"] == j["hex_sources"][name]);
+    std::size_t binned = 0;
+    for (const auto& c : q["scaled_jacobian_histogram"]["counts"]) binned += c.get<std::size_t>();
+    CHECK(binned == q["hexes"].get<std::size_t>());
+    CHECK(q["min_scaled_jacobian"].get<double>() >= j["min_scaled_jacobian"].get<double>());
+    inverted += q["inverted"].get<std::size_t>();
+  }
+  CHECK(inverted == j["below_zero"].get<std::size_t>());
   // Each hex's source (0 woven ... 4 pillow) and scaled Jacobian as cell fields, as many values as hexes.
   const std::string vtk = loom::test::slurp(dir / "out.vtk");
   const auto source = vtk.find("SCALARS source int 1\nLOOKUP_TABLE default\n");

@@ -12,15 +12,15 @@ namespace loom {
 
 std::size_t QualityHistogram::total() const { return std::accumulate(counts.begin(), counts.end(), std::size_t{0}); }
 
+void QualityHistogram::add(double sj) {
+  const auto last = static_cast<long>(counts.size()) - 1;
+  const long bin = std::isnan(sj) ? 0 : static_cast<long>(std::floor((sj - kFrom) / kWidth));
+  ++counts[static_cast<std::size_t>(std::clamp(bin, 0L, last))];
+}
+
 QualityHistogram quality_histogram(const HexMesh& mesh) {
   QualityHistogram h;
-  const auto last = static_cast<long>(h.counts.size()) - 1;
-  for (std::size_t hex = 0; hex < mesh.hexes.size(); ++hex) {
-    const double sj = scaled_jacobian(mesh, hex);
-    // A NaN (a degenerate hex) counts with the worst.
-    const long bin = std::isnan(sj) ? 0 : static_cast<long>(std::floor((sj - QualityHistogram::kFrom) / QualityHistogram::kWidth));
-    ++h.counts[static_cast<std::size_t>(std::clamp(bin, 0L, last))];
-  }
+  for (std::size_t hex = 0; hex < mesh.hexes.size(); ++hex) h.add(scaled_jacobian(mesh, hex));
   return h;
 }
 

@@ -19,6 +19,8 @@ struct QualityHistogram {
   /// the last bin closed at 1.
   std::array<std::size_t, 20> counts{};
   std::size_t total() const;
+  /// Counts one hex of scaled Jacobian `sj` (a NaN, a degenerate hex, with the worst).
+  void add(double sj);
 };
 
 QualityHistogram quality_histogram(const HexMesh& mesh);

@@ -1,15 +1,46 @@
 #include "src/cli/weave_report.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 
 #include <fmt/format.h>
 
+#include "src/check/edge_valence.hpp"
 #include "src/check/hex_sheets.hpp"
 #include "src/check/quality_histogram.hpp"
 #include "src/check/validity.hpp"
 #include "src/geometry/inversion_causes.hpp"
 
 namespace loom::cli {
+
+namespace {
+
+/// Per hex source: its hexes, how many are inverted (scaled Jacobian <= 0),
+/// the least scaled Jacobian and the histogram; a source with no hexes is left out.
+nlohmann::json quality_by_source(const HexMesh& mesh, const std::vector<closure::HexSource>& source) {
+  struct Tally {
+    std::size_t hexes = 0, inverted = 0;
+    double least = 1;
+    QualityHistogram histogram;
+  };
+  std::map<std::string, Tally> by_source;
+  for (std::size_t h = 0; h < mesh.hexes.size() && h < source.size(); ++h) {
+    Tally& t = by_source[closure::source_name(source[h])];
+    const double sj = scaled_jacobian(mesh, h);
+    ++t.hexes;
+    t.inverted += !(sj > 0);
+    t.least = std::isnan(sj) ? -1 : std::min(t.least, sj);
+    t.histogram.add(sj);
+  }
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [name, t] : by_source)
+    out[name] = {{"hexes", t.hexes}, {"inverted", t.inverted}, {"min_scaled_jacobian", t.least},
+                 {"scaled_jacobian_histogram", histogram_json(t.histogram)}};
+  return out;
+}
+
+}  // namespace
 
 nlohmann::json report_json(const std::string& input, const SurfaceAngleBound& bound, const pipeline::MeshingResult& r) {
   const engine::Strategy& strategy = r.strategy;
@@ -62,6 +93,15 @@ nlohmann::json report_json(const std::string& input, const SurfaceAngleBound& bo
     j["verdict_min_scaled_jacobian"] = r.check->quality.min_verdict_scaled_jacobian;
     j["verdict_below_zero"] = r.check->quality.verdict_below_zero;
     j["scaled_jacobian_histogram"] = histogram_json(quality_histogram(*r.mesh));
+    j["quality_by_source"] = quality_by_source(*r.mesh, r.source);
+    nlohmann::json valences = nlohmann::json::object();
+    std::size_t irregular = 0;
+    for (const auto& [valence, edges] : interior_valence_histogram(*r.mesh)) {
+      valences[std::to_string(valence)] = edges;
+      if (valence != 4) irregular += edges;
+    }
+    j["interior_edge_valences"] = valences;
+    j["irregular_interior_edges"] = irregular;
     nlohmann::json causes;
     for (auto c : {geometry::InversionCause::locked_corner, geometry::InversionCause::crowded_edge,
                    geometry::InversionCause::unexplained})

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "src/check/criteria.hpp"
+#include "src/check/edge_valence.hpp"
 #include "src/check/hex_topology.hpp"
 #include "src/check/validity.hpp"
 
@@ -31,18 +32,14 @@ InversionDiagnosis diagnose_inversions(const HexMesh& mesh) {
     return d;
   }
   const HexTopology topo = build_hex_topology(mesh);
+  const EdgeValences valences = edge_valences(mesh, topo);
+  const std::vector<std::uint32_t>& hexes_round = valences.hexes_round;
+  const std::vector<bool>& boundary_edge = valences.on_boundary;
   std::vector<bool> on_boundary(mesh.points.size(), false);
-  std::vector<bool> boundary_edge(topo.edge_count, false);
-  std::vector<std::uint32_t> hexes_round(topo.edge_count, 0);
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-    for (int e = 0; e < 12; ++e) ++hexes_round[topo.hex_edges[12 * h + static_cast<std::size_t>(e)]];
-    for (int f = 0; f < 6; ++f) {
-      if (!topo.is_boundary_face(topo.hex_faces[6 * h + static_cast<std::size_t>(f)])) continue;
-      for (std::uint32_t v : face_nodes(mesh.hexes[h], f)) on_boundary[v] = true;
-      for (int e : kHexFaceEdges[static_cast<std::size_t>(f)])
-        boundary_edge[topo.hex_edges[12 * h + static_cast<std::size_t>(e)]] = true;
-    }
-  }
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+    for (int f = 0; f < 6; ++f)
+      if (topo.is_boundary_face(topo.hex_faces[6 * h + static_cast<std::size_t>(f)]))
+        for (std::uint32_t v : face_nodes(mesh.hexes[h], f)) on_boundary[v] = true;
   InversionDiagnosis d;
   d.cause.assign(mesh.hexes.size(), InversionCause::none);
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
