@@ -171,7 +171,8 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
 
   // Diagnostics describe the run whatever its outcome; the mesh is written only on success.
   if (!o.report.empty())
-    loom::write_text_atomically(o.report, report_json(o.input, bound, result).dump(2) + "\n");
+    loom::write_text_atomically(o.report,
+                                report_json(o.input, {bound, loom::surface_half_thickness(surface)}, result).dump(2) + "\n");
   loom::stc::PictureFailures pictures = steps ? steps->picture_failures() : loom::stc::PictureFailures{};
   const std::size_t svg_limit = o.no_svg ? 0 : 4000;
   if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir, pictures, svg_limit);

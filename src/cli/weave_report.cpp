@@ -42,7 +42,8 @@ nlohmann::json quality_by_source(const HexMesh& mesh, const std::vector<closure:
 
 }  // namespace
 
-nlohmann::json report_json(const std::string& input, const SurfaceAngleBound& bound, const pipeline::MeshingResult& r) {
+nlohmann::json report_json(const std::string& input, const SurfaceFigures& surface, const pipeline::MeshingResult& r) {
+  const SurfaceAngleBound& bound = surface.bound;
   const engine::Strategy& strategy = r.strategy;
   nlohmann::json j;
   j["input"] = input;
@@ -102,6 +103,8 @@ nlohmann::json report_json(const std::string& input, const SurfaceAngleBound& bo
     }
     j["interior_edge_valences"] = valences;
     j["irregular_interior_edges"] = irregular;
+    const DepthProfile depth = depth_profile(*r.mesh);
+    j["depth"] = {{"hexes_by_depth", depth.hexes}, {"inverted_by_depth", depth.inverted}, {"deepest", depth.deepest()}};
     nlohmann::json causes;
     for (auto c : {geometry::InversionCause::locked_corner, geometry::InversionCause::crowded_edge,
                    geometry::InversionCause::unexplained})
@@ -110,6 +113,9 @@ nlohmann::json report_json(const std::string& input, const SurfaceAngleBound& bo
   }
   j["surface_angle_bound"] = {
       {"least_sine", bound.least_sine}, {"mean_sine", bound.mean_sine}, {"quads_below_0_2", bound.quads_below_0_2}};
+  j["surface_half_thickness"] = {{"max", surface.half_thickness.max},
+                                 {"median", surface.half_thickness.median},
+                                 {"rays", surface.half_thickness.rays}};
   j["boundary_layer_hexes"] = r.boundary_layer.hexes_added;
   j["smoothing_iterations"] = r.smoothing.iterations;
   j["match_attempts"] = r.weave.counters.match_attempts;

@@ -7,14 +7,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include "src/check/depth.hpp"
 #include "src/check/surface_angle_bound.hpp"
 #include "src/io/cell_table.hpp"
 #include "src/pipeline/mesh_surface.hpp"
 
 namespace loom::cli {
 
-/// The report of a run on `input` (the path the user gave), whose surface has `bound`.
-nlohmann::json report_json(const std::string& input, const SurfaceAngleBound& bound, const pipeline::MeshingResult& r);
+/// What the report says of the surface itself, before any hex.
+struct SurfaceFigures {
+  SurfaceAngleBound bound;
+  SurfaceThickness half_thickness;
+};
+
+/// The report of a run on `input` (the path the user gave), whose surface has `surface`.
+nlohmann::json report_json(const std::string& input, const SurfaceFigures& surface, const pipeline::MeshingResult& r);
 
 /// Where each hex came from (0 woven, 1 searched, 2 database, 3 filled,
 /// 4 pillow), its scaled Jacobian (the minimum over its corners, as criterion 7
