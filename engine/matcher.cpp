@@ -53,7 +53,7 @@ std::int64_t Matcher::measure(const CExpr& e, const Match& m) const {
   std::array<Id, max_measure_args> args{};
   for (std::size_t i = 0; i < call.args.size(); ++i) args[i] = m.elements[call.args[i]];
   try {
-    return (*rule.measure_fns[static_cast<std::size_t>(e.value)])(g_, std::span<const Id>(args.data(), call.args.size()));
+    return rule.measure_fns[static_cast<std::size_t>(e.value)](g_, std::span<const Id>(args.data(), call.args.size()));
   } catch (const RuleError&) {
     throw;
   } catch (const std::bad_alloc&) {

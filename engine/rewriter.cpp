@@ -141,7 +141,7 @@ void check_actions(const Rule& rule, const Actions& actions, const Schema& schem
 
 void bind_measures(Rule& rule, const Actions& actions) {
   rule.measure_fns.clear();
-  for (const RewriteOp& m : rule.measures) rule.measure_fns.push_back(&actions.find_measure(m.action)->measure);
+  for (const RewriteOp& m : rule.measures) rule.measure_fns.push_back(actions.find_measure(m.action)->measure);
 }
 
 }  // namespace loom::engine

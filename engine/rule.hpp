@@ -144,7 +144,7 @@ struct Rule {
   std::vector<RewriteOp> measures;
   /// The domain's function for each of `measures`, bound by the Engine that
   /// runs the rule (bind_measures, rewriter.hpp); empty until then.
-  std::vector<const MeasureFn*> measure_fns;
+  std::vector<MeasureFn> measure_fns;
   bool global = false;                   ///< uses a scan: any change may matter
 };
 

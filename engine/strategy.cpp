@@ -93,7 +93,7 @@ private:
   }
   static bool is_keyword(const std::string& w) {
     for (const char* k : {"apply", "repeat", "try", "else", "backtrack", "phase", "seed", "all", "except", "goal",
-                          "window", "branching", "max", "priority", "sequence", "random", "when", "search", "depth"})
+                          "window", "branching", "max", "priority", "sequence", "random", "when", "search", "depth", "beam", "cost", "width"})
       if (w == k) return true;
     return false;
   }
@@ -144,14 +144,18 @@ private:
   /// `{ goal MEASURE  SETTING N ...  apply ... }`, the body of a backtrack or a search.
   void goal_block(StrategyNode& n, int depth, const char* node, const char* branches, std::initializer_list<Setting> settings) {
     expect("{");
+    const bool has_cost = n.op == StrategyNode::Op::beam;
     for (bool more = true; more;) {
       more = false;
       if (accept("goal")) n.goal = name("a measure"), more = true;
+      else if (has_cost && accept("cost")) n.cost = name("a measure"), more = true;
       for (const Setting& s : settings)
         if (!more && accept(s.keyword)) *s.value = s.positive ? positive(s.what) : number(s.what), more = true;
     }
     if (n.goal.empty())
       fail(peek(), fmt::format("{} needs 'goal MEASURE' first (the goal is that the measure reaches 0)", node));
+    if (has_cost && n.cost.empty())
+      fail(peek(), fmt::format("{} needs 'cost MEASURE' (the states it keeps are those of least cost)", node));
     if (peek().text != "apply")
       fail(peek(), fmt::format("{} takes one 'apply' ({} are that apply's matches)", node, branches));
     n.body.push_back(this->node(depth + 1));
@@ -194,11 +198,18 @@ private:
       // A level is a frame of the search's recursion.
       if (n.depth > kMaxSearchDepth)
         throw RuleError(file_, n.pos, fmt::format("a search deeper than {} levels; lower its depth", kMaxSearchDepth));
+    } else if (accept("beam")) {
+      n.op = StrategyNode::Op::beam;
+      goal_block(n, depth, "beam", "its branches",
+                 {{"width", &n.width, "a width", true},
+                  {"depth", &n.depth, "a depth", true},
+                  {"branching", &n.branching, "a branching", true},
+                  {"max", &n.max_tried, "a number of applications", true}});
     } else if (accept("when")) {
       n.op = StrategyNode::Op::when;
       n.goal = name("a measure");
     } else {
-      fail(peek(), "expected 'apply', 'repeat', 'try', 'backtrack', 'search', 'when' or '}'");
+      fail(peek(), "expected 'apply', 'repeat', 'try', 'backtrack', 'search', 'beam', 'when' or '}'");
     }
     return n;
   }

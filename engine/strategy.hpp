@@ -38,6 +38,17 @@
 //                      applications tried, the graph is as before and it fails.
 //                      Counted in applications, never seconds: the same on
 //                      every machine. Defaults: depth 4, branching 3, max 10000.
+//   beam { goal MEASURE  cost MEASURE  width W  depth D  branching B  max N  apply PICK RULES }
+//                      beam search over applications: level by level, each
+//                      state kept tries the first B matches of the apply; of
+//                      the states they make, the W of least cost (ties: the
+//                      one made first) make the next level. The first level
+//                      that holds a state whose goal measure is 0 ends it: of
+//                      those, the one of least cost is kept and the node
+//                      succeeds (the domain sees only the path to it).
+//                      Otherwise, after D levels or N applications tried, the
+//                      graph is as before and it fails. Defaults: width 8,
+//                      depth 4, branching 3, max 10000.
 //   when MEASURE       succeeds when the measure is 0, else fails (and so
 //                      ends its block)
 // A block runs its nodes in turn and fails at the first that fails; what the
@@ -51,7 +62,7 @@
 namespace loom::engine {
 
 struct StrategyNode {
-  enum class Op { apply, repeat, try_else, backtrack, search, when };
+  enum class Op { apply, repeat, try_else, backtrack, search, beam, when };
   enum class Pick { priority, sequence, random };
   Op op = Op::apply;
   ast::Pos pos;
@@ -61,10 +72,12 @@ struct StrategyNode {
   std::vector<std::string> rules;   ///< named (or excepted, with `all`)
   // repeat: body; try_else: body, otherwise; backtrack: body (one apply)
   std::vector<StrategyNode> body, otherwise;
-  // backtrack, search, when
+  // backtrack, search, beam, when
   std::string goal;
+  std::string cost;                 ///< beam: the measure it keeps the least of
   std::size_t window = 64, branching = 3, max_backtracks = 200;  ///< backtrack
-  std::size_t depth = 4, max_tried = 10'000;                     ///< search (and branching)
+  std::size_t depth = 4, max_tried = 10'000;                     ///< search, beam (and branching)
+  std::size_t width = 8;                                         ///< beam
 };
 
 /// Calls f(node) for every node of `nodes`, nested ones included, parents first.

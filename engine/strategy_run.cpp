@@ -76,6 +76,7 @@ private:
       }
       case StrategyNode::Op::backtrack: return backtrack(n);
       case StrategyNode::Op::search: return search(n);
+      case StrategyNode::Op::beam: return beam(n);
       case StrategyNode::Op::when: return domain_.measures.at(n.goal)() == 0;
     }
     return false;
@@ -197,6 +198,58 @@ private:
     return !found.empty();
   }
 
+  // A state is its path from where the beam began: to expand one, the graph
+  // is taken back there and the path applied again, so memory is one
+  // checkpoint and W paths, whatever the depth.
+  bool beam(const StrategyNode& n) {
+    const Engine::Selection s = selection_.at(&n.body.front());
+    const auto& goal = domain_.measures.at(n.goal);
+    const auto& cost = domain_.measures.at(n.cost);
+    if (goal() == 0) return true;
+    struct State {
+      std::int64_t cost;
+      std::size_t made;  ///< the order states were made in: ties go to the first
+      std::vector<Match> path;
+    };
+    const Graph::Checkpoint start = eng_.mark();
+    std::vector<State> level{{cost(), 0, {}}}, found;
+    std::size_t tried = 0, made = 0;
+    for (std::size_t depth = 1; depth <= n.depth && found.empty() && !level.empty(); ++depth) {
+      std::vector<State> next;
+      for (const State& state : level) {
+        if (tried >= n.max_tried || limit_reached()) break;
+        eng_.undo(start);
+        for (const Match& m : state.path) eng_.apply(m);
+        for (Match& m : eng_.choices(s, n.branching)) {
+          if (tried >= n.max_tried || limit_reached()) break;
+          const Graph::Checkpoint before = eng_.mark();
+          State child{0, ++made, state.path};
+          child.path.push_back(m);
+          eng_.apply(std::move(m));
+          ++tried;
+          child.cost = cost();
+          (goal() == 0 ? found : next).push_back(std::move(child));
+          eng_.undo(before);
+          eng_.release(before);
+        }
+      }
+      auto cheaper = [](const State& a, const State& b) { return a.cost != b.cost ? a.cost < b.cost : a.made < b.made; };
+      std::sort(next.begin(), next.end(), cheaper);
+      if (next.size() > n.width) next.resize(n.width);
+      level = std::move(next);
+      std::sort(found.begin(), found.end(), cheaper);
+    }
+    eng_.undo(start);
+    eng_.release(start);
+    phase_->searched += tried;
+    if (found.empty()) return false;
+    for (Match& m : found.front().path) {
+      eng_.apply(std::move(m), &app_);
+      after();
+    }
+    return true;
+  }
+
   Engine& eng_;
   const Strategy& strategy_;
   const StrategyDomain& domain_;
@@ -217,14 +270,17 @@ void check_strategy(const Strategy& strategy, const std::vector<Rule>& rules, co
         if (std::none_of(rules.begin(), rules.end(), [&](const Rule& r) { return r.name == name; }))
           throw RuleError(strategy.source, n.pos, fmt::format("no rule '{}' is loaded; see 'loom rules list'", name));
       const bool has_goal = n.op == StrategyNode::Op::backtrack || n.op == StrategyNode::Op::search ||
-                            n.op == StrategyNode::Op::when;
-      if (has_goal && std::find(measures.begin(), measures.end(), n.goal) == measures.end()) {
-        std::string known;
-        for (const auto& m : measures) known += (known.empty() ? "" : ", ") + m;
+                            n.op == StrategyNode::Op::beam || n.op == StrategyNode::Op::when;
+      auto known = [&](const std::string& name, const char* role) {
+        if (std::find(measures.begin(), measures.end(), name) != measures.end()) return;
+        std::string list;
+        for (const auto& m : measures) list += (list.empty() ? "" : ", ") + m;
         throw RuleError(strategy.source, n.pos,
-                        fmt::format("no measure '{}' to make a goal of; this domain has: {}", n.goal,
-                                    known.empty() ? "none" : known));
-      }
+                        fmt::format("no measure '{}' to make {} of; this domain has: {}", name, role,
+                                    list.empty() ? "none" : list));
+      };
+      if (has_goal) known(n.goal, "a goal");
+      if (n.op == StrategyNode::Op::beam) known(n.cost, "a cost");
     });
 }
 

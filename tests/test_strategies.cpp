@@ -86,7 +86,7 @@ TEST_CASE("a broken strategy is refused with file:line:column and what was expec
   CHECK(parse_error("phase p { apply all ! }") ==
         "s.strategy:1:21: unexpected character '!'; a strategy holds words, numbers and braces");
   CHECK(parse_error("phase p { frobnicate }") ==
-        "s.strategy:1:11: expected 'apply', 'repeat', 'try', 'backtrack', 'search', 'when' or '}', found 'frobnicate'");
+        "s.strategy:1:11: expected 'apply', 'repeat', 'try', 'backtrack', 'search', 'beam', 'when' or '}', found 'frobnicate'");
   std::string deep = "phase p ";
   for (int i = 0; i < 300; ++i) deep += "{ repeat ";
   CHECK(parse_error(deep).find("blocks nested more than 100 deep") != std::string::npos);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "src/check/validity.hpp"
+#include "src/stc/primal.hpp"
 
 namespace loom::weave {
 
@@ -40,6 +41,24 @@ struct FaceShape {
 };
 
 }  // namespace
+
+std::int64_t inverted_hexes(const stc::Stc& stc) {
+  const engine::Graph& g = stc.graph();
+  std::int64_t inverted = 0;
+  for (engine::Id h = 0; h < g.id_bound(); ++h) {
+    if (!g.alive(h) || g.kind(h) != stc.ids().hex) continue;
+    std::array<Vec3, 8> corners{};
+    bool placed = true;
+    for (unsigned k = 0; k < 8 && placed; ++k) {
+      const engine::Id n = stc::corner_node(stc, h, k);
+      const Vec3* p = n == engine::no_element ? nullptr : stc.position(n);
+      if (p) corners[k] = *p;
+      placed = p != nullptr;
+    }
+    inverted += placed && !(hex_sj(corners) > 0);
+  }
+  return inverted;
+}
 
 void add_geometric_measures(engine::Actions& actions, const stc::Stc& stc) {
   const engine::KindId node = stc.ids().node;

@@ -34,4 +34,9 @@ namespace loom::weave {
 /// Registers the measures above on `actions`, reading positions from `stc`.
 void add_geometric_measures(engine::Actions& actions, const stc::Stc& stc);
 
+/// The hexes of `stc` whose eight corners are placed and whose scaled
+/// Jacobian there is <= 0: the weave's `inverted`, a strategy's cost
+/// (docs/strategies.md). It visits every hex.
+std::int64_t inverted_hexes(const stc::Stc& stc);
+
 }  // namespace loom::weave

@@ -179,9 +179,10 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   const OpenSides front(stc);
   engine::StrategyDomain domain;
   domain.measures["front"] = [&front] { return front(); };
+  domain.measures["inverted"] = [&stc] { return inverted_hexes(stc); };
   domain.max_steps = options.max_steps ? options.max_steps : 200 * stc.faces() + 10000;
   if (options.after_step) domain.after_step = [&](const engine::Application& app) { options.after_step(app, stc); };
-  engine::check_strategy(options.strategy, eng.rules(), {"front"});
+  engine::check_strategy(options.strategy, eng.rules(), {"front", "inverted"});
   const engine::StrategyOutcome run = engine::run_strategy(eng, options.strategy, domain);
   result.backtracks = run.backtracks;
   result.stalled = run.stalled;
