@@ -198,9 +198,10 @@ private:
     return !found.empty();
   }
 
-  // A state is its path from where the beam began: to expand one, the graph
-  // is taken back there and the path applied again, so memory is one
-  // checkpoint and W paths, whatever the depth.
+  // A state is its path from where the beam began. The graph holds one path
+  // at a time, with a checkpoint before each of its applications; going to
+  // another state undoes back to where the two paths part and applies the
+  // rest, so siblings (expanded one after the other) cost little.
   bool beam(const StrategyNode& n) {
     const Engine::Selection s = selection_.at(&n.body.front());
     const auto& goal = domain_.measures.at(n.goal);
@@ -211,15 +212,39 @@ private:
       std::size_t made;  ///< the order states were made in: ties go to the first
       std::vector<Match> path;
     };
-    const Graph::Checkpoint start = eng_.mark();
+    std::vector<Match> on_graph;
+    std::vector<Graph::Checkpoint> marks;
+    auto same = [](const Match& a, const Match& b) {
+      return a.rule == b.rule && a.elements == b.elements && a.indices == b.indices;
+    };
+    auto back_to = [&](std::size_t length) {
+      while (on_graph.size() > length) {
+        eng_.undo(marks.back());
+        eng_.release(marks.back());
+        marks.pop_back();
+        on_graph.pop_back();
+      }
+    };
+    auto go_to = [&](const std::vector<Match>& path) {
+      std::size_t common = 0;
+      while (common < on_graph.size() && common < path.size() && same(on_graph[common], path[common])) ++common;
+      back_to(common);
+      for (std::size_t i = common; i < path.size(); ++i) {
+        marks.push_back(eng_.mark());
+        eng_.apply(path[i]);
+        on_graph.push_back(path[i]);
+      }
+    };
     std::vector<State> level{{cost(), 0, {}}}, found;
     std::size_t tried = 0, made = 0;
+    auto cheaper = [](const State& a, const State& b) { return a.cost != b.cost ? a.cost < b.cost : a.made < b.made; };
     for (std::size_t depth = 1; depth <= n.depth && found.empty() && !level.empty(); ++depth) {
       std::vector<State> next;
+      // Expanded in the order they were made, so that siblings come together.
+      std::sort(level.begin(), level.end(), [](const State& a, const State& b) { return a.made < b.made; });
       for (const State& state : level) {
         if (tried >= n.max_tried || limit_reached()) break;
-        eng_.undo(start);
-        for (const Match& m : state.path) eng_.apply(m);
+        go_to(state.path);
         for (Match& m : eng_.choices(s, n.branching)) {
           if (tried >= n.max_tried || limit_reached()) break;
           const Graph::Checkpoint before = eng_.mark();
@@ -233,16 +258,14 @@ private:
           eng_.release(before);
         }
       }
-      auto cheaper = [](const State& a, const State& b) { return a.cost != b.cost ? a.cost < b.cost : a.made < b.made; };
       std::sort(next.begin(), next.end(), cheaper);
       if (next.size() > n.width) next.resize(n.width);
       level = std::move(next);
-      std::sort(found.begin(), found.end(), cheaper);
     }
-    eng_.undo(start);
-    eng_.release(start);
+    back_to(0);
     phase_->searched += tried;
     if (found.empty()) return false;
+    std::sort(found.begin(), found.end(), cheaper);
     for (Match& m : found.front().path) {
       eng_.apply(std::move(m), &app_);
       after();

@@ -159,6 +159,20 @@ TEST_CASE("loom weave runs a strategy file, reports its phases, and refuses a br
   CHECK(j["phases"][1]["name"] == "repair");
   CHECK(j["hexes"] == 8);
 
+  // The weave's measures as a beam's goal and cost, through the CLI: it weaves the box alone.
+  {
+    std::ofstream beam(dir / "beam.strategy");
+    beam << "phase weave { beam { goal front cost inverted width 2 depth 100 branching 2 max 100000\n"
+            "  apply priority all except pillow_improper } }\n";
+  }
+  r = run_cli("weave " + (dir / "box.obj").string() + " -o " + (dir / "c.vtk").string() + " --closure none --strategy " +
+              (dir / "beam.strategy").string() + " --report " + (dir / "c.json").string());
+  REQUIRE_MESSAGE(r.status == 0, r.err);
+  j = nlohmann::json::parse(std::ifstream(dir / "c.json"));
+  CHECK(j["made_by"] == "woven");
+  CHECK(j["hexes"] == 8);
+  CHECK(j["phases"][0]["searched"].get<int>() > 0);
+
   {
     std::ofstream bad(dir / "bad.strategy");
     bad << "phase weave {\n  apply priority all except nosuch\n}\n";

@@ -26,6 +26,7 @@
 #include "src/util/atomic_file.hpp"
 #include "src/util/error.hpp"
 #include "src/weave/step_dump.hpp"
+#include "src/weave/weave.hpp"
 
 namespace loom::cli {
 
@@ -54,7 +55,7 @@ loom::engine::Strategy parse_strategy(const WeaveCommandOptions& o, const std::v
   try {
     if (!o.strategy.empty()) s = loom::weave::strategy_named(o.strategy);
     else s = o.rules.empty() ? loom::weave::default_strategy() : loom::weave::strategy_of(o.rules);
-    loom::engine::check_strategy(s, rules, {"front"});
+    loom::engine::check_strategy(s, rules, loom::weave::strategy_measures());
   } catch (const std::invalid_argument& e) {
     throw loom::InputError(e.what());
   } catch (const loom::engine::RuleError& e) {

@@ -170,6 +170,11 @@ std::string describe_left(const stc::Stc& stc) {
 
 }  // namespace
 
+const std::vector<std::string>& strategy_measures() {
+  static const std::vector<std::string> names{"front", "inverted"};
+  return names;
+}
+
 WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOptions& options) {
   WeaveResult result;
   engine::Engine eng(stc.graph(), std::move(rules), weave_actions(stc), options.strategy.seed);
@@ -182,7 +187,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   domain.measures["inverted"] = [&stc] { return inverted_hexes(stc); };
   domain.max_steps = options.max_steps ? options.max_steps : 200 * stc.faces() + 10000;
   if (options.after_step) domain.after_step = [&](const engine::Application& app) { options.after_step(app, stc); };
-  engine::check_strategy(options.strategy, eng.rules(), {"front", "inverted"});
+  engine::check_strategy(options.strategy, eng.rules(), strategy_measures());
   const engine::StrategyOutcome run = engine::run_strategy(eng, options.strategy, domain);
   result.backtracks = run.backtracks;
   result.stalled = run.stalled;

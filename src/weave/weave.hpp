@@ -60,6 +60,10 @@ struct WeaveResult {
 /// The rules shipped with Loom (the source tree's rules/, or $LOOM_RULES).
 std::filesystem::path default_rules_dir();
 
+/// The measures the weave offers a strategy's goals and costs
+/// (docs/strategies.md): `front` (whiskers left) and `inverted`.
+const std::vector<std::string>& strategy_measures();
+
 /// The domain's named actions, tests and measures that rules may use
 /// (place_hex_corner; measures.hpp: angle, corner_sj, ...).
 engine::Actions weave_actions(stc::Stc& stc);
