@@ -46,9 +46,11 @@
 //                      that holds a state whose goal measure is 0 ends it: of
 //                      those, the one of least cost is kept and the node
 //                      succeeds (the domain sees only the path to it).
-//                      Otherwise, after D levels or N applications tried, the
-//                      graph is as before and it fails. Defaults: width 8,
-//                      depth 4, branching 3, max 10000.
+//                      Otherwise, after D levels or N applications tried, it
+//                      fails and leaves the closest state it saw (least goal
+//                      measure, then least cost), as a backtrack leaves its
+//                      progress; `try` undoes it. Defaults: width 8, depth 4,
+//                      branching 3, max 10000.
 //   when MEASURE       succeeds when the measure is 0, else fails (and so
 //                      ends its block)
 // A block runs its nodes in turn and fails at the first that fails; what the

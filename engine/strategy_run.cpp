@@ -211,6 +211,7 @@ private:
       std::int64_t cost;
       std::size_t made;  ///< the order states were made in: ties go to the first
       std::vector<Match> path;
+      std::int64_t left = 0;  ///< the goal measure
     };
     std::vector<Match> on_graph;
     std::vector<Graph::Checkpoint> marks;
@@ -235,9 +236,11 @@ private:
         on_graph.push_back(path[i]);
       }
     };
-    std::vector<State> level{{cost(), 0, {}}}, found;
+    std::vector<State> level{{cost(), 0, {}, goal()}}, found;
+    State closest = level.front();
     std::size_t tried = 0, made = 0;
     auto cheaper = [](const State& a, const State& b) { return a.cost != b.cost ? a.cost < b.cost : a.made < b.made; };
+    auto closer = [&](const State& a, const State& b) { return a.left != b.left ? a.left < b.left : cheaper(a, b); };
     for (std::size_t depth = 1; depth <= n.depth && found.empty() && !level.empty(); ++depth) {
       std::vector<State> next;
       // Expanded in the order they were made, so that siblings come together.
@@ -253,7 +256,9 @@ private:
           eng_.apply(std::move(m));
           ++tried;
           child.cost = cost();
-          (goal() == 0 ? found : next).push_back(std::move(child));
+          child.left = goal();
+          if (closer(child, closest)) closest = child;
+          (child.left == 0 ? found : next).push_back(std::move(child));
           eng_.undo(before);
           eng_.release(before);
         }
@@ -264,13 +269,13 @@ private:
     }
     back_to(0);
     phase_->searched += tried;
-    if (found.empty()) return false;
+    // Short of the goal, the closest state stays, as a backtrack's progress does.
     std::sort(found.begin(), found.end(), cheaper);
-    for (Match& m : found.front().path) {
+    for (Match& m : found.empty() ? closest.path : found.front().path) {
       eng_.apply(std::move(m), &app_);
       after();
     }
-    return true;
+    return !found.empty();
   }
 
   Engine& eng_;

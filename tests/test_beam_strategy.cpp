@@ -94,14 +94,23 @@ TEST_CASE("a wider beam keeps the costly start too, and stops at the first level
   CHECK(k.seen == 2);
 }
 
-TEST_CASE("a beam that finds no goal within its depth or its budget leaves the graph as it was") {
-  for (const char* limits : {"width 4 branching 2 depth 1", "width 4 branching 2 depth 5 max 2"}) {
+TEST_CASE("a beam that finds no goal within its depth or budget leaves the closest state it saw; try undoes it") {
+  {
     Counter k;
-    auto out = k.run(limits);
+    // One level: big leaves a goal measure of 4 (1 + |6 - 3|), small 5: big is the closer.
+    auto out = k.run("width 4 branching 2 depth 1");
+    CHECK(k.graph.get(k.c, k.value) == 3);
+    CHECK(k.graph.get(k.c, k.spent) == 10);
+    CHECK(k.seen == 1);
+    CHECK(out.phases[0].searched == 2);
+  }
+  {
+    Counter k;
+    auto s = engine::Strategy::parse_text(
+        "phase p { try { beam { goal left cost spent width 4 branching 2 depth 1 apply all } } }", "t.strategy");
+    engine::run_strategy(k.eng, s, k.domain);
     CHECK(k.graph.get(k.c, k.value) == 0);
     CHECK(k.graph.get(k.c, k.spent) == 0);
-    CHECK(k.seen == 0);
-    CHECK(out.phases[0].searched > 0);
   }
 }
 
