@@ -9,6 +9,10 @@
 #include <fmt/format.h>
 
 #include "engine/engine.hpp"
+#include "engine/rule_parser.hpp"
+#include "src/check/edge_valence.hpp"
+#include "src/check/validity.hpp"
+#include "src/stc/primal.hpp"
 #include "engine/rule_compiler.hpp"
 #include "src/gen/generators.hpp"
 #include "src/stc/build.hpp"
@@ -220,4 +224,34 @@ TEST_CASE("a misused measure is one error line with its place") {
   } catch (const engine::RuleError& e) {
     CHECK(std::string(e.what()) == fmt::format("bad.rule:6:5: rule 'r': measure 'angle' failed: node {} has no position yet", n));
   }
+}
+
+TEST_CASE("the weave's strategy measures: inverted and irregular hexes of the state, as the mesh counts them") {
+  const auto rules = engine::load_rule_dir(weave::default_rules_dir(), schema());
+  // randquad 20 seed 1: a sphere the weave closes alone, irregularly.
+  std::vector<std::int64_t> irregular;
+  for (const QuadSurface& surface : {gen::box(2, 2, 2), gen::cylinder(4, 2), gen::randquad(20, 1)}) {
+    stc::Stc stc = stc::build_from_surface(surface);
+    REQUIRE(weave::weave(stc, rules, {}).closed);
+    const HexMesh mesh = stc::to_hex_mesh(stc);
+    std::int64_t off = 0;
+    for (const auto& [valence, edges] : interior_valence_histogram(mesh))
+      off += static_cast<std::int64_t>(edges) * std::abs(static_cast<std::int64_t>(valence) - 4);
+    CHECK(weave::irregular_edges(stc) == off);
+    irregular.push_back(off);
+    std::size_t inverted = 0;
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h) inverted += !(scaled_jacobian(mesh, h) > 0);
+    CHECK(weave::inverted_hexes(stc) == static_cast<std::int64_t>(inverted));
+  }
+  CHECK(irregular == std::vector<std::int64_t>{0, 0, irregular[2]});
+  CHECK(irregular[2] > 0);
+
+  // A node pushed through the hexes round it inverts them.
+  stc::Stc box = stc::build_from_surface(gen::box(2, 2, 2));
+  REQUIRE(weave::weave(box, rules, {}).closed);
+  CHECK(weave::inverted_hexes(box) == 0);
+  const engine::Id corner = node_at(box, {0, 0, 0});
+  REQUIRE(corner != engine::no_element);
+  box.place(corner, {1.5, 1.5, 1.5});
+  CHECK(weave::inverted_hexes(box) > 0);
 }

@@ -60,6 +60,33 @@ std::int64_t inverted_hexes(const stc::Stc& stc) {
   return inverted;
 }
 
+std::int64_t irregular_edges(const stc::Stc& stc) {
+  const engine::Graph& g = stc.graph();
+  const auto& ids = stc.ids();
+  std::int64_t irregular = 0;
+  std::vector<engine::Id> hexes;
+  for (engine::Id e = 0; e < g.id_bound(); ++e) {
+    if (!g.alive(e) || g.kind(e) != ids.edge) continue;
+    hexes.clear();
+    bool closed = true, on_boundary = false;
+    for (engine::SlotId s : g.incoming(e)) {
+      if (g.slot_port(s) != ids.face_edge) continue;
+      const engine::Id f = g.slot_owner(s);
+      on_boundary |= g.get(f, ids.face_boundary) >= 0;  // its ideal is the surface's, not 4
+      for (unsigned side = 0; side < 2; ++side) {
+        const engine::Id h = g.at(f, ids.face_cell, side);
+        if (h == engine::no_element) closed = false;  // a front face: more hexes may come
+        else hexes.push_back(h);
+      }
+    }
+    if (on_boundary) continue;
+    std::sort(hexes.begin(), hexes.end());
+    const auto valence = static_cast<std::int64_t>(std::unique(hexes.begin(), hexes.end()) - hexes.begin());
+    irregular += closed ? std::abs(valence - 4) : std::max<std::int64_t>(0, valence - 4);
+  }
+  return irregular;
+}
+
 void add_geometric_measures(engine::Actions& actions, const stc::Stc& stc) {
   const engine::KindId node = stc.ids().node;
   auto params = [node](std::initializer_list<const char*> names) {

@@ -39,4 +39,11 @@ void add_geometric_measures(engine::Actions& actions, const stc::Stc& stc);
 /// (docs/strategies.md). It visits every hex.
 std::int64_t inverted_hexes(const stc::Stc& stc);
 
+/// How far the interior edges of `stc` are from valence 4: |hexes round it -
+/// 4| summed over the edges every face round which is closed on both sides,
+/// plus the hexes over 4 round each edge still on the front (they can only
+/// gain more). Boundary edges are left out. The weave's `irregular`, a
+/// strategy's cost; it visits every edge.
+std::int64_t irregular_edges(const stc::Stc& stc);
+
 }  // namespace loom::weave

@@ -171,7 +171,7 @@ std::string describe_left(const stc::Stc& stc) {
 }  // namespace
 
 const std::vector<std::string>& strategy_measures() {
-  static const std::vector<std::string> names{"front", "inverted"};
+  static const std::vector<std::string> names{"front", "inverted", "irregular"};
   return names;
 }
 
@@ -185,6 +185,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   engine::StrategyDomain domain;
   domain.measures["front"] = [&front] { return front(); };
   domain.measures["inverted"] = [&stc] { return inverted_hexes(stc); };
+  domain.measures["irregular"] = [&stc] { return irregular_edges(stc); };
   domain.max_steps = options.max_steps ? options.max_steps : 200 * stc.faces() + 10000;
   if (options.after_step) domain.after_step = [&](const engine::Application& app) { options.after_step(app, stc); };
   engine::check_strategy(options.strategy, eng.rules(), strategy_measures());

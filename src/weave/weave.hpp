@@ -30,8 +30,8 @@ engine::Strategy strategy_named(const std::string& spec);
 engine::Strategy strategy_of(const std::filesystem::path& rules_dir);
 
 struct WeaveOptions {
-  /// Its backtracks may name the goal `front`: the open hex sides left (0
-  /// when the weave has closed).
+  /// Its goals and costs may name strategy_measures(): `front`, the open hex
+  /// sides left (0 when the weave has closed), `inverted`, `irregular`.
   engine::Strategy strategy = default_strategy();
   /// Stop after this many applications (0: 200 per initial face plus 10,000).
   std::size_t max_steps = 0;
@@ -61,7 +61,7 @@ struct WeaveResult {
 std::filesystem::path default_rules_dir();
 
 /// The measures the weave offers a strategy's goals and costs
-/// (docs/strategies.md): `front` (whiskers left) and `inverted`.
+/// (docs/strategies.md): `front` (whiskers left), `inverted`, `irregular`.
 const std::vector<std::string>& strategy_measures();
 
 /// The domain's named actions, tests and measures that rules may use
