@@ -51,7 +51,14 @@ std::int64_t Matcher::measure(const CExpr& e, const Match& m) const {
                     fmt::format("rule '{}': measure '{}' can only be evaluated by an engine that has the domain's measures",
                                 rule.name, call.action));
   std::array<Id, max_measure_args> args{};
-  for (std::size_t i = 0; i < call.args.size(); ++i) args[i] = m.elements[call.args[i]];
+  for (std::size_t i = 0; i < call.args.size(); ++i) {
+    args[i] = m.elements[call.args[i]];
+    // A rewrite may have deleted it (`delete x`, then a statement measuring x).
+    if (args[i] == no_element || !g_.alive(args[i]))
+      throw RuleError(rule.file, call.pos,
+                      fmt::format("rule '{}': measure '{}' reads '{}', which is no longer in the graph", rule.name,
+                                  call.action, rule.vars[static_cast<std::size_t>(call.args[i])].name));
+  }
   try {
     return rule.measure_fns[static_cast<std::size_t>(e.value)](g_, std::span<const Id>(args.data(), call.args.size()));
   } catch (const RuleError&) {

@@ -40,19 +40,18 @@ public:
     Action run;   ///< an action's
     Test test;    ///< a test's
     MeasureFn measure;  ///< a measure's
-    std::string unit;   ///< a measure's: what its integer counts, for messages and docs
   };
 
   void add(const std::string& name, std::vector<ActionParameter> parameters, Action action) {
-    actions_[name] = Entry{std::move(parameters), std::move(action), {}, {}, {}};
+    actions_[name] = Entry{std::move(parameters), std::move(action), {}, {}};
   }
   void add_test(const std::string& name, std::vector<ActionParameter> parameters, Test test) {
-    tests_[name] = Entry{std::move(parameters), {}, std::move(test), {}, {}};
+    tests_[name] = Entry{std::move(parameters), {}, std::move(test), {}};
   }
-  /// A measure rules may use in any expression (`if`, `where`, `order`):
-  /// an integer in `unit` (say "degrees", or "thousandths").
-  void add_measure(const std::string& name, std::vector<ActionParameter> parameters, std::string unit, MeasureFn measure) {
-    measures_[name] = Entry{std::move(parameters), {}, {}, std::move(measure), std::move(unit)};
+  /// A measure rules may use in any expression (`if`, `where`, `order`): an
+  /// integer, in a unit the domain documents (degrees, thousandths).
+  void add_measure(const std::string& name, std::vector<ActionParameter> parameters, MeasureFn measure) {
+    measures_[name] = Entry{std::move(parameters), {}, {}, std::move(measure)};
   }
   const Entry* find(const std::string& name) const { return find_in(actions_, name); }
   const Entry* find_test(const std::string& name) const { return find_in(tests_, name); }

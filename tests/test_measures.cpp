@@ -211,6 +211,15 @@ TEST_CASE("a misused measure is one error line with its place") {
                        "bad.rule:6:5: rule 'r': measure 'angle' can only be evaluated by an engine that has the domain's measures",
                        engine::RuleError);
 
+  // An element the rewrite deleted before the statement that measures it.
+  {
+    stc::Stc doomed = stc::build_from_surface(gen::box(1, 1, 1));
+    auto r = engine::compile_rules("rule d {\n match {" + corner_match + " }\n rewrite {\n delete v\n a.boundary = angle(a, v, b) } }",
+                                   "bad.rule", schema());
+    engine::Engine eng(doomed.graph(), r, weave::weave_actions(doomed));
+    CHECK_THROWS_WITH_AS(eng.step(), "bad.rule:12:15: rule 'd': measure 'angle' reads 'v', which is no longer in the graph",
+                         engine::RuleError);
+  }
   // A node without a position yet: the measure's own error, at its call.
   stc::Stc lone;
   const engine::Id n = lone.graph().add(lone.ids().node);

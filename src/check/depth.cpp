@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "src/check/criteria.hpp"
+#include "src/check/edge_valence.hpp"
 #include "src/check/hex_topology.hpp"
 #include "src/check/validity.hpp"
 
@@ -18,11 +19,9 @@ DepthProfile depth_profile(const HexMesh& mesh) {
   constexpr std::size_t unreached = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> depth(mesh.points.size(), unreached);
   std::deque<std::uint32_t> queue;
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-    for (int f = 0; f < 6; ++f)
-      if (topo.is_boundary_face(topo.hex_faces[6 * h + static_cast<std::size_t>(f)]))
-        for (std::uint32_t v : face_nodes(mesh.hexes[h], f))
-          if (depth[v] == unreached) depth[v] = 0, queue.push_back(v);
+  const std::vector<bool> on_boundary = edge_valences(mesh, topo).node_on_boundary;
+  for (std::uint32_t v = 0; v < on_boundary.size(); ++v)
+    if (on_boundary[v]) depth[v] = 0, queue.push_back(v);
   std::vector<std::vector<std::uint32_t>> neighbours(mesh.points.size());
   for (const Hex& hex : mesh.hexes)
     for (const auto& [a, b] : kHexEdgeCorners) {

@@ -1,7 +1,8 @@
 #pragma once
-// How many hexes stand round each edge of a hex mesh, and which edges lie on
-// its boundary: the valence whose distance from the ideal (4 inside, 2 on a
-// flat boundary) says how irregular a mesh is (issue 32, "reporting").
+// How many hexes stand round each edge of a hex mesh, and which edges and
+// nodes lie on its boundary: the valence whose distance from the ideal (4
+// inside, 2 on a flat boundary) says how irregular a mesh is (issue 32,
+// "reporting"), and what the inversion diagnosis and the depth count from.
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -13,6 +14,7 @@ namespace loom {
 struct EdgeValences {
   std::vector<std::uint32_t> hexes_round;  ///< per edge of the topology: hexes that hold it
   std::vector<bool> on_boundary;           ///< per edge: it is a side of a boundary face
+  std::vector<bool> node_on_boundary;      ///< per mesh point: a corner of a boundary face
 };
 
 /// Precondition: as build_hex_topology's, and `topo` is `mesh`'s.

@@ -35,11 +35,7 @@ InversionDiagnosis diagnose_inversions(const HexMesh& mesh) {
   const EdgeValences valences = edge_valences(mesh, topo);
   const std::vector<std::uint32_t>& hexes_round = valences.hexes_round;
   const std::vector<bool>& boundary_edge = valences.on_boundary;
-  std::vector<bool> on_boundary(mesh.points.size(), false);
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-    for (int f = 0; f < 6; ++f)
-      if (topo.is_boundary_face(topo.hex_faces[6 * h + static_cast<std::size_t>(f)]))
-        for (std::uint32_t v : face_nodes(mesh.hexes[h], f)) on_boundary[v] = true;
+  const std::vector<bool>& on_boundary = valences.node_on_boundary;
   InversionDiagnosis d;
   d.cause.assign(mesh.hexes.size(), InversionCause::none);
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {

@@ -113,23 +113,23 @@ void add_geometric_measures(engine::Actions& actions, const stc::Stc& stc) {
   };
   const engine::KindId face = stc.ids().face;
 
-  actions.add_measure("corner_sj", params({"v", "a", "b", "c"}), "thousandths",
+  actions.add_measure("corner_sj", params({"v", "a", "b", "c"}),
                       [at](const engine::Graph&, std::span<const engine::Id> n) {
                         return thousandths(corner_scaled_jacobian(at(n, 0), at(n, 1), at(n, 2), at(n, 3)));
                       });
-  actions.add_measure("hex_sj", params({"v", "a", "b", "c", "ab", "bc", "ca"}), "thousandths",
+  actions.add_measure("hex_sj", params({"v", "a", "b", "c", "ab", "bc", "ca"}),
                       [at](const engine::Graph&, std::span<const engine::Id> n) {
                         const Vec3 &v = at(n, 0), &a = at(n, 1), &b = at(n, 2), &c = at(n, 3);
                         // VTK order: v c ca a on one face, b bc (far) ab on the other.
                         const std::array<Vec3, 8> hex{v, c, at(n, 6), a, b, at(n, 5), a + b + c - 2.0 * v, at(n, 4)};
                         return thousandths(hex_sj(hex));
                       });
-  actions.add_measure("angle", params({"a", "v", "b"}), "degrees",
+  actions.add_measure("angle", params({"a", "v", "b"}),
                       [at](const engine::Graph&, std::span<const engine::Id> n) {
                         const Vec3& v = at(n, 1);
                         return degrees(angle_between(at(n, 0) - v, at(n, 2) - v));
                       });
-  actions.add_measure("dihedral", params({"a", "b", "c", "d"}), "degrees",
+  actions.add_measure("dihedral", params({"a", "b", "c", "d"}),
                       [at](const engine::Graph&, std::span<const engine::Id> n) {
                         const Vec3 &a = at(n, 0), &b = at(n, 1), &c = at(n, 2), &d = at(n, 3);
                         // Front faces face away from the unmeshed region.
@@ -138,17 +138,17 @@ void add_geometric_measures(engine::Actions& actions, const stc::Stc& stc) {
                         const bool convex = dot(d - a, out1) <= 0;
                         return degrees(convex ? std::numbers::pi - between : std::numbers::pi + between);
                       });
-  actions.add_measure("gap", params({"u", "a", "b"}), "thousandths",
+  actions.add_measure("gap", params({"u", "a", "b"}),
                       [at](const engine::Graph&, std::span<const engine::Id> n) {
                         const Vec3 &u = at(n, 0), &a = at(n, 1), &b = at(n, 2);
                         const double size = 0.5 * (norm(a - u) + norm(b - u));
                         return size > 0 ? thousandths(norm(a - b) / size) : std::int64_t{0};
                       });
-  actions.add_measure("facing", {{"f", face}, {"g", face}}, "degrees",
+  actions.add_measure("facing", {{"f", face}, {"g", face}},
                       [shape](const engine::Graph&, std::span<const engine::Id> n) {
                         return degrees(angle_between(shape(n[0]).normal, -1.0 * shape(n[1]).normal));
                       });
-  actions.add_measure("distance", {{"f", face}, {"g", face}}, "thousandths",
+  actions.add_measure("distance", {{"f", face}, {"g", face}},
                       [shape](const engine::Graph&, std::span<const engine::Id> n) {
                         const FaceShape f = shape(n[0]), g = shape(n[1]);
                         const double size = 0.5 * (f.edge + g.edge);
