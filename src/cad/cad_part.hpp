@@ -16,7 +16,14 @@ struct PartSurface {
   double size = 0;      ///< the quads' target edge length that was used
   double diagonal = 0;  ///< of the part's bounding box
   int faces = 0;        ///< CAD faces on the part's boundary
+  /// Meshings after the first one, and the balls of half size its surface
+  /// was made with (gmsh_quads.hpp, mesh_refined_quads).
+  int refinement_rounds = 0, refinement_balls = 0;
 };
+
+/// The least corner sine `loom mesh` refines a part's surface towards: at
+/// most the least scaled Jacobian any hex mesh of that surface can have.
+inline constexpr double kLeastCornerSine = 0.2;
 
 /// The file kinds `loom mesh` reads, by extension (any case).
 inline constexpr std::array<const char*, 7> kCadExtensions{".step", ".stp", ".iges", ".igs", ".brep", ".brp", ".geo"};
@@ -24,7 +31,8 @@ bool is_cad_file(const std::filesystem::path& part);
 
 /// The boundary of the one solid in `part`, meshed free and all-quad (see
 /// mesh_free_quads: triangles, recombination, then the subdivision that makes
-/// every element quads and the count even). `size` is the quads' edge length
+/// every element quads and the count even), then meshed again finer round
+/// quads with a corner sine below kLeastCornerSine (mesh_refined_quads). `size` is the quads' edge length
 /// wanted; by default the bounding box's diagonal / kDefaultDivisions. Throws
 /// InputError when the file cannot be read, holds no solid or several, or the
 /// size is out of range.

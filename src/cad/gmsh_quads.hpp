@@ -21,6 +21,26 @@ namespace loom::cad {
 /// 3t + 4q = 2 * edges, so t is even, and it becomes 3t + 4q quads.
 void mesh_free_quads(double size);
 
+/// What mesh_refined_quads made: encode_quads's bytes for the surfaces asked,
+/// and how it got there.
+struct RefinedQuads {
+  std::string bytes;
+  double least_sine = 0;  ///< the least corner sine of its quads
+  int rounds = 0;         ///< meshings after the first
+  int balls = 0;          ///< refinement balls its mesh was made with
+};
+
+/// mesh_free_quads, then, while a quad has a corner whose sine is below
+/// `wanted` and rounds are left, meshes again with Gmsh's size cut to 1.5
+/// times such a quad's longest edge within 1.5 of those edges of its centre
+/// (the balls of earlier rounds kept). One size for the
+/// whole part leaves slivers where a narrow face or a coarse arc forces them,
+/// and no hex on such a quad can have a scaled Jacobian above its sine
+/// (check/surface_angle_bound.hpp). Keeps the mesh with the greatest least
+/// sine (on a tie the first); deterministic.
+RefinedQuads mesh_refined_quads(double size, double wanted, const std::vector<int>& surfaces, const std::string& where,
+                                const std::string& hint);
+
 /// The quads of `surfaces` (empty: of every surface) with their nodes, as bytes
 /// for decode_quads. `where` and `hint` name the caller in the error raised
 /// when Gmsh left an element that is not a quad.

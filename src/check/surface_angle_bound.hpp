@@ -25,4 +25,8 @@ struct SurfaceAngleBound {
 
 SurfaceAngleBound surface_angle_bound(const QuadSurface& surface);
 
+/// The least sine of the quad's four corner angles (0 at a corner with a
+/// zero-length edge).
+double least_corner_sine(const QuadSurface& surface, const Quad& quad);
+
 }  // namespace loom

@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "src/cad/cad_part.hpp"
+#include "src/check/surface_angle_bound.hpp"
 #include "src/cli/command.hpp"
 #include "src/cli/weave_command.hpp"
 #include "src/io/mesh_format.hpp"
@@ -28,11 +29,17 @@ loom::QuadSurface part_surface(const loom::cli::WeaveCommandOptions& o, const Me
   budget.stage("meshing the part's boundary with Gmsh");
   loom::cad::PartSurface part = loom::cad::quad_surface_of_part(o.input, m.size);
   const loom::SurfaceSummary summary = loom::validate_surface(part.surface, o.input);
-  if (!o.quiet)
-    std::cerr << fmt::format("{}: {} faces meshed by Gmsh into {} quads (size {:.4g}, the diagonal {:.4g} / {:.3g}); "
-                             "genus {}\n",
+  if (!o.quiet) {
+    const loom::SurfaceAngleBound bound = loom::surface_angle_bound(part.surface);
+    const std::string refined =
+        part.refinement_balls == 0
+            ? std::string()
+            : fmt::format(", made finer in {} balls round slivers", part.refinement_balls);
+    std::cerr << fmt::format("{}: {} faces meshed by Gmsh into {} quads (size {:.4g}, the diagonal {:.4g} / {:.3g}{}; "
+                             "least corner sine {:.3g}); genus {}\n",
                              o.input, part.faces, part.surface.quads.size(), part.size, part.diagonal,
-                             part.diagonal / part.size, summary.genus);
+                             part.diagonal / part.size, refined, bound.least_sine, summary.genus);
+  }
   if (!m.surface.empty()) loom::write_surface(m.surface, part.surface);
   return std::move(part.surface);
 }
