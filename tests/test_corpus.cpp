@@ -71,7 +71,8 @@ TEST_CASE("corpus: the pipeline's verdict never beats the checker's") {
       options.weave.max_steps = 5000;  // these weaves need a few hundred at most
       pipeline::MeshingResult r = pipeline::mesh_surface(surface, rules, options);
       if (!r.mesh) {
-        CHECK_FALSE(r.combinatorially_valid());
+        // No mesh is only for a weave left open, or a closed one that says why.
+        CHECK((!r.weave.closed || !r.failure.empty()));
         continue;
       }
       REQUIRE(r.weave.closed);
