@@ -26,7 +26,7 @@ std::string lower_extension(const std::filesystem::path& part) {
   return ext;
 }
 
-// The child's reply: size, diagonal, face count, refinement rounds and balls,
+// The child's reply: size, diagonal, face count, meshings and refinement balls,
 // then encode_quads's bytes.
 using Header = std::array<double, 5>;
 
@@ -53,7 +53,7 @@ std::string mesh_in_child(const std::string& path, const std::string& where, std
   for (const auto& [dim, tag] : boundary) faces.push_back(tag);
   // Subdivision halves every edge: Gmsh meshes at twice the size wanted.
   const RefinedQuads quads = mesh_refined_quads(2 * h, kLeastCornerSine, faces, where, kHint);
-  const Header header{h, diagonal, static_cast<double>(faces.size()), static_cast<double>(quads.rounds),
+  const Header header{h, diagonal, static_cast<double>(faces.size()), static_cast<double>(quads.meshings),
                       static_cast<double>(quads.balls)};
   std::string out(reinterpret_cast<const char*>(header.data()), sizeof header);
   return out + quads.bytes;
@@ -83,7 +83,7 @@ PartSurface quad_surface_of_part(const std::filesystem::path& part, std::optiona
   result.size = header[0];
   result.diagonal = header[1];
   result.faces = static_cast<int>(header[2]);
-  result.refinement_rounds = static_cast<int>(header[3]);
+  result.meshings = static_cast<int>(header[3]);
   result.refinement_balls = static_cast<int>(header[4]);
   orient_consistently(result.surface);
   return result;

@@ -16,9 +16,9 @@ struct PartSurface {
   double size = 0;      ///< the quads' target edge length that was used
   double diagonal = 0;  ///< of the part's bounding box
   int faces = 0;        ///< CAD faces on the part's boundary
-  /// Meshings after the first one, and the balls of half size its surface
-  /// was made with (gmsh_quads.hpp, mesh_refined_quads).
-  int refinement_rounds = 0, refinement_balls = 0;
+  /// How many meshes Gmsh made to choose from, and the balls of smaller size
+  /// the one kept was made with (gmsh_quads.hpp, mesh_refined_quads).
+  int meshings = 1, refinement_balls = 0;
 };
 
 /// The least corner sine `loom mesh` refines a part's surface towards: at

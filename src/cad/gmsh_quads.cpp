@@ -126,8 +126,8 @@ RefinedQuads mesh_refined_quads(double size, double wanted, const std::vector<in
       // slivers for more rounds; larger ones grew the bracket's quads by half.
       added.push_back({0.25 * centre, 1.5 * longest, std::max(1.5 * longest, size / 64)});
     }
-    if (round == 0 || least > best.least_sine)
-      best = {std::move(bytes), least, round, static_cast<int>(balls.size())};
+    if (round == 0 || least > best.least_sine) best = {std::move(bytes), least, 0, static_cast<int>(balls.size())};
+    best.meshings = round + 1;
     if (added.empty()) break;
     const std::size_t from = balls.size();
     balls.insert(balls.end(), added.begin(), added.end());

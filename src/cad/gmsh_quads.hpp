@@ -26,8 +26,8 @@ void mesh_free_quads(double size);
 struct RefinedQuads {
   std::string bytes;
   double least_sine = 0;  ///< the least corner sine of its quads
-  int rounds = 0;         ///< meshings after the first
-  int balls = 0;          ///< refinement balls its mesh was made with
+  int meshings = 0;       ///< how many meshes were made to choose from
+  int balls = 0;          ///< refinement balls the one kept was made with
 };
 
 /// mesh_free_quads, then, while a quad has a corner whose sine is below

@@ -32,9 +32,9 @@ loom::QuadSurface part_surface(const loom::cli::WeaveCommandOptions& o, const Me
   if (!o.quiet) {
     const loom::SurfaceAngleBound bound = loom::surface_angle_bound(part.surface);
     const std::string refined =
-        part.refinement_balls == 0
-            ? std::string()
-            : fmt::format(", made finer in {} balls round slivers", part.refinement_balls);
+        part.refinement_balls > 0 ? fmt::format(", made finer in {} balls round slivers", part.refinement_balls)
+        : part.meshings > 1       ? std::string(", made no better by finer meshes round its slivers")
+                                  : std::string();
     std::cerr << fmt::format("{}: {} faces meshed by Gmsh into {} quads (size {:.4g}, the diagonal {:.4g} / {:.3g}{}; "
                              "least corner sine {:.3g}); genus {}\n",
                              o.input, part.faces, part.surface.quads.size(), part.size, part.diagonal,
