@@ -6,6 +6,7 @@
 #include <map>
 
 #include "engine/rule_compiler.hpp"
+#include "src/check/edge_valence.hpp"
 #include "src/check/validity.hpp"
 #include "src/closure/cavities.hpp"
 #include "src/closure/database.hpp"
@@ -141,6 +142,35 @@ TEST_CASE("the search closes small surfaces with valid meshes, the spindle with 
   CHECK(with.hexes.size() <= 60);
   CHECK(check_against(spindle, with.hexes).combinatorial_valid());
   CHECK(std::count(with.source.begin(), with.source.end(), HexSource::database) > 0);
+}
+
+/// Sum of |valence - 4| over the interior edges of `hexes` over the surface's points.
+static std::size_t irregularity(const QuadSurface& surface, const std::vector<Hex>& hexes) {
+  HexMesh mesh{surface.points, hexes};
+  for (const Hex& h : hexes)
+    for (std::uint32_t v : h)
+      if (mesh.points.size() <= v) mesh.points.resize(v + 1);
+  std::size_t sum = 0;
+  for (const auto& [valence, edges] : interior_valence_histogram(mesh))
+    sum += edges * (valence > 4 ? valence - 4 : 4 - valence);
+  return sum;
+}
+
+TEST_CASE("a search costed by irregularity closes with fewer irregular edges, the fewest-hexes one with fewer hexes") {
+  // randquad 16 2 from the surface: 55 hexes, irregularity 109 by fewest
+  // hexes; 56 and 90 with weight 1 (the pipeline's cavity search).
+  const QuadSurface surface = gen::randquad(16, 2);
+  ClosureOptions fewest, regular = pipeline::cavity_search_defaults();
+  REQUIRE(fewest.irregularity_weight == 0);
+  REQUIRE(regular.irregularity_weight > 0);
+  const Cavity cavity = surface_cavity(quadmap::from_surface(surface));
+  const auto by_hexes = close_cavity(cavity, &shipped_database(), fewest);
+  const auto by_regularity = close_cavity(cavity, &shipped_database(), regular);
+  REQUIRE(by_hexes.closed);
+  REQUIRE(by_regularity.closed);
+  CHECK(check_against(surface, by_regularity.hexes).combinatorial_valid());
+  CHECK(irregularity(surface, by_regularity.hexes) < irregularity(surface, by_hexes.hexes));
+  CHECK(by_hexes.hexes.size() <= by_regularity.hexes.size());
 }
 
 /// The hexes of a weave of `surface` stopped after 30 steps, over the surface's points.

@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "src/closure/hex_meeting.hpp"
+#include "src/closure/irregularity.hpp"
 #include "src/quadmap/canonical.hpp"
 #include "src/quadmap/hex_glue.hpp"
 
@@ -68,6 +69,7 @@ public:
     quadmap::Gluing gluing{};  ///< the gluing made there
     std::int32_t last = -1;    ///< arena index of the newest hex placed
     int hexes = 0;
+    float irregularity = 0;  ///< of the hexes placed so far (shelling_search.hpp)
     std::uint32_t front_quads = 0;
     bool closed = false;
   };
@@ -95,8 +97,8 @@ public:
     std::vector<int> degree;
   };
 
-  ShellSpace(const Cavity& cavity, const Database* db, std::size_t max_front)
-      : cavity_(cavity), context_(cavity.hexes), db_(db), max_front_(max_front) {}
+  ShellSpace(const Cavity& cavity, const Database* db, std::size_t max_front, double irregularity_weight)
+      : cavity_(cavity), context_(cavity.hexes), db_(db), max_front_(max_front), weight_(irregularity_weight) {}
 
   State start() const {
     State s;
@@ -107,7 +109,7 @@ public:
   }
 
   Key key(const State& s) const { return s.closed ? 0 : s.key; }
-  double cost(const State& s) const { return s.hexes; }
+  double cost(const State& s) const { return s.hexes + weight_ * s.irregularity; }
   double estimate(const State& s) const { return s.closed ? 0.0 : s.front_quads / 4.0; }
   /// Every front quad needs a hex, and a hex covers at most six.
   double lower_bound(const State& s) const { return s.closed ? 0.0 : std::ceil(s.front_quads / 6.0); }
@@ -123,9 +125,9 @@ public:
     if (f.front.size() <= canonical_limit) {
       const auto canon = quadmap::canonical_unoriented(f.front);
       profile_.canonical += clock.lap();
-      auto [it, fresh] = expanded_codes_.try_emplace(quadmap::CodeHash{}(canon.code), s.hexes);
-      if (!fresh && it->second <= s.hexes) return;  // an isomorphic front was expanded no dearer
-      it->second = s.hexes;
+      auto [it, fresh] = expanded_codes_.try_emplace(quadmap::CodeHash{}(canon.code), cost(s));
+      if (!fresh && it->second <= cost(s)) return;  // an isomorphic front was expanded no dearer
+      it->second = cost(s);
       close_from_database(s, f, canon, emit);
     }
     close_cube(s, f, emit);
@@ -163,6 +165,7 @@ public:
           next.gluing = {q, sides};
           next.last = place(glued.hex, s.last, HexSource::searched);
           next.hexes = s.hexes + 1;
+          next.irregularity = s.irregularity + gluing_cost(glued, f, at, near_at, covered);
           next.front_quads = quads;
           emit(std::move(next));
           ++emitted;
@@ -242,6 +245,27 @@ private:
     std::vector<std::pair<std::uint32_t, std::int32_t>> pairs_;
   };
 
+  /// Hexes round an edge before a gluing: the cavity's and the placed ones
+  /// near the front hold every hex at a front vertex.
+  HexesRound hexes_round(const NearAtVertex& near) const {
+    return [this, &near](std::uint32_t u, std::uint32_t v) {
+      int n = 0;
+      for (std::int32_t h : context_.at(u)) n += hex_has_edge(cavity_.hexes[static_cast<std::size_t>(h)], u, v);
+      near.each(u, [&](std::int32_t a) { n += hex_has_edge(arena_[static_cast<std::size_t>(a)].hex, u, v); });
+      return n;
+    };
+  }
+  float gluing_cost(const quadmap::GluedHex& glued, const Front& f, const QuadsAtVertex& at, const NearAtVertex& near,
+                    const std::vector<std::uint32_t>& covered) const {
+    if (weight_ == 0) return 0;
+    return static_cast<float>(gluing_irregularity(glued, f.front, f.owner, at, covered, hexes_round(near)));
+  }
+  float closing_cost(const std::vector<Hex>& hexes, const Front& f) const {
+    if (weight_ == 0) return 0;
+    const NearAtVertex near(f.near, arena_);
+    return static_cast<float>(closing_irregularity(hexes, f.front, f.owner, hexes_round(near)));
+  }
+
   /// Whether `hex`, glued onto the front quads `onto` (indices into
   /// f.front), meets every hex before it as a valid mesh allows. Only hexes
   /// sharing a corner with it can fail: the cavity's (context_) and the
@@ -278,6 +302,7 @@ private:
     State done;
     done.closed = true;
     done.hexes = s.hexes + 1;
+    done.irregularity = s.irregularity + closing_cost({hex}, f);
     done.last = place(hex, s.last, HexSource::searched);
     emit(std::move(done));
   }
@@ -325,6 +350,7 @@ private:
       State done;
       done.closed = true;
       done.hexes = s.hexes + static_cast<int>(hexes.size());
+      done.irregularity = s.irregularity + closing_cost(hexes, f);
       done.last = last;
       emit(std::move(done));
       return;
@@ -337,7 +363,8 @@ private:
   std::size_t max_front_;
   std::vector<Placed> arena_;
   std::vector<Front> expanded_;
-  std::unordered_map<std::uint64_t, int> expanded_codes_;  ///< canonical code hash -> fewest hexes expanded at
+  double weight_;
+  std::unordered_map<std::uint64_t, double> expanded_codes_;  ///< canonical code hash -> least cost expanded at
   std::unordered_map<const Database::Entry*, std::vector<Hex>> templates_;  ///< replayed entries
   mutable std::vector<std::int32_t> checked_;
   mutable std::vector<const Quad*> onto_;
@@ -347,7 +374,8 @@ private:
 }  // namespace
 
 ClosureResult close_cavity(const Cavity& cavity, const Database* db, const ClosureOptions& options) {
-  ShellSpace space(cavity, db, cavity.front.size() + static_cast<std::size_t>(std::max(0, options.max_growth)));
+  ShellSpace space(cavity, db, cavity.front.size() + static_cast<std::size_t>(std::max(0, options.max_growth)),
+                   options.irregularity_weight);
   auto outcome = engine::best_first_search(space, space.start(), options.limits);
   ClosureResult r;
   r.stats = outcome.stats;

@@ -3,9 +3,12 @@
 // glued onto the front one at a time (hex_glue.hpp) until what is left is a
 // cube or a boundary the database holds, whose mesh then goes in whole.
 // Anytime weighted best-first search (engine/search.hpp) over fronts: cost =
-// hexes placed, estimate = a quarter of the front's quads (a glued hex
-// removes at most four), lower bound = a sixth of them; fronts merged by
-// canonical code. The fewest hexes found within the budget win. Deterministic.
+// hexes placed + irregularity_weight * irregularity, estimate = a quarter of
+// the front's quads (a glued hex removes at most four), lower bound = a sixth
+// of them; fronts merged by canonical code. The cheapest closure found within
+// the budget wins. Deterministic.
+// Irregularity (irregularity.hpp) is where the valid-geometry issue found the
+// inverted hexes: interior edges with other than 4 hexes round them.
 #include <cstdint>
 #include <vector>
 
@@ -27,6 +30,8 @@ struct ClosureOptions {
   engine::SearchLimits limits{4'000, 1'000'000, 600.0, 20.0};
   /// Fronts larger than the starting one by more than this are not explored.
   int max_growth = 8;
+  /// 0: the fewest hexes, whatever their valences (the combinatorial corpus).
+  double irregularity_weight = 0;
 };
 
 /// Where a search's time went, in seconds.

@@ -257,6 +257,12 @@ closure::ClosureOptions wide_search_defaults() {
   return wide;
 }
 
+closure::ClosureOptions cavity_search_defaults() {
+  closure::ClosureOptions search;
+  search.irregularity_weight = 1;
+  return search;
+}
+
 MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const MeshingOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   MeshingResult r;
@@ -299,10 +305,12 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
       search.limits.max_expansions = expansions;
       return search;
     };
-    // Beside a valid mesh within the published bound, only a short search: it has to find a smaller one.
+    // Beside a valid mesh within the published bound, only a short search: it
+    // has to find a smaller one, so it counts hexes alone.
     if (small) {
-      search_from_surface(r, surface, res, options,
-                          budget(within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions), false);
+      closure::ClosureOptions fewest = budget(within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions);
+      fewest.irregularity_weight = 0;
+      search_from_surface(r, surface, res, options, fewest, false);
       // Still over the bound: first the search in symmetric pairs (16 439:
       // 78 hexes to 68 in a minute), then the wide search. They can only
       // improve a mesh the run already has: when one runs out of memory
