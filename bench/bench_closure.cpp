@@ -1,7 +1,7 @@
 // bench_closure: closure in figures, from whole surfaces.
 //
 //   bench_closure [--quads A-B] [--randquad LIST] [--seeds N] [--shapes]
-//                 [--pipeline] [--expansions N] [--weight W] [--database FILE]
+//                 [--pipeline] [--expansions N] [--weight W] [--irregularity W] [--database FILE]
 //                 [--shard K/N] [--csv FILE [--resume]]
 //   bench_closure --merge A.csv B.csv ...
 //
@@ -183,6 +183,8 @@ int main(int argc, char** argv) {
   app.add_flag("--pipeline", pipeline, "run loom weave's defaults (weave, cavity closure, fill) instead of the search alone");
   app.add_option("--expansions", options.limits.max_expansions, "search budget per cavity (default 4000)");
   app.add_option("--weight", options.limits.weight, "weight of the search's estimate (default 20)");
+  app.add_option("--irregularity", options.irregularity_weight,
+                 "weight of the hexes' irregularity in the search's cost (default 0: fewest hexes)");
   app.add_option("--growth", options.max_growth, "fronts larger than the start by more than this are not explored (default 8)");
   app.add_option("--database", database, "database file ('' for none)");
   app.add_option("--shard", shard, "run only inputs K-1, K-1+N, ... (K/N)");

@@ -158,11 +158,11 @@ static std::size_t irregularity(const QuadSurface& surface, const std::vector<He
 
 TEST_CASE("a search costed by irregularity closes with fewer irregular edges, the fewest-hexes one with fewer hexes") {
   // randquad 16 2 from the surface: 55 hexes, irregularity 109 by fewest
-  // hexes; 56 and 90 with weight 1 (the pipeline's cavity search).
+  // hexes; 56 and 90 with weight 1.
   const QuadSurface surface = gen::randquad(16, 2);
-  ClosureOptions fewest, regular = pipeline::cavity_search_defaults();
+  ClosureOptions fewest, regular;
   REQUIRE(fewest.irregularity_weight == 0);
-  REQUIRE(regular.irregularity_weight > 0);
+  regular.irregularity_weight = 1;
   const Cavity cavity = surface_cavity(quadmap::from_surface(surface));
   const auto by_hexes = close_cavity(cavity, &shipped_database(), fewest);
   const auto by_regularity = close_cavity(cavity, &shipped_database(), regular);

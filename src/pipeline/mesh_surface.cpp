@@ -257,12 +257,6 @@ closure::ClosureOptions wide_search_defaults() {
   return wide;
 }
 
-closure::ClosureOptions cavity_search_defaults() {
-  closure::ClosureOptions search;
-  search.irregularity_weight = 1;
-  return search;
-}
-
 MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const MeshingOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   MeshingResult r;

@@ -51,13 +51,6 @@ inline constexpr std::size_t kDirectSearchQuads = kSmallFrontQuads;
 /// 20,000,000 open states, and a seconds guard of an hour.
 closure::ClosureOptions wide_search_defaults();
 
-/// The cavity closure's search: the default budget, costed by hexes plus
-/// their irregularity (weight 1). On 25 random quadrangulations of 16 to 64
-/// quads it leaves 18% fewer hexes inverted than the fewest hexes do
-/// (docs/results.md). The search of a small surface against the published
-/// bound counts hexes alone.
-closure::ClosureOptions cavity_search_defaults();
-
 struct MeshingOptions {
   weave::WeaveOptions weave;
   /// Weaves in all (see step 1); deterministic: the same attempts in the same order.
@@ -72,7 +65,10 @@ struct MeshingOptions {
   Closure closure = Closure::none;
   /// The database file and the fill's caps directory, read when first needed.
   std::filesystem::path database, fill_caps;
-  closure::ClosureOptions search = cavity_search_defaults();
+  /// The cavity search (irregularity_weight 0 by default: docs/results.md
+  /// has what weight 1 gives); a small surface's search against the
+  /// published bound counts hexes alone whatever the weight.
+  closure::ClosureOptions search;
   /// The wide search a surface of at most 20 quads gets when the searches
   /// before it leave it over 72 hexes (mesh_surface.cpp has the figures).
   closure::ClosureOptions wide_search = wide_search_defaults();
