@@ -1,9 +1,9 @@
 #include "src/closure/irregularity.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <utility>
 
+#include "src/check/edge_valence.hpp"
 #include "src/check/hex_topology.hpp"
 
 namespace loom::closure {
@@ -46,8 +46,8 @@ int gluing_irregularity(const quadmap::GluedHex& glued, const quadmap::QuadMap& 
     if (surface) return;
     for (int a = 0; a < 6 - glued.k; ++a)
       on_front = on_front || quad_has_side(glued.added[static_cast<std::size_t>(a)], u, v);
-    const int hexes = round(u, v) + 1;
-    change += (on_front ? std::max(0, hexes - 4) : std::abs(hexes - 4)) - std::max(0, hexes - 5);
+    const int before = round(u, v);
+    change += edge_irregularity(before + 1, !on_front) - edge_irregularity(before, false);
   });
   return change;
 }
@@ -73,7 +73,7 @@ int closing_irregularity(const std::vector<Hex>& hexes, const quadmap::QuadMap& 
       if (surface) continue;
       before = round(u, v);
     }
-    change += std::abs(before + added - 4) - std::max(0, before - 4);
+    change += edge_irregularity(before + added, true) - edge_irregularity(before, false);
   }
   return change;
 }

@@ -1,10 +1,9 @@
 #pragma once
-// The irregularity the closure search can cost (shelling_search.hpp), counted
-// as hexes are glued onto a cavity's front: over the interior edges a closure
-// closes, |hexes round the edge - 4|, and over the edges left on the front,
-// the hexes round them beyond 4 (those can only end more irregular). Edges on
-// a surface quad of the front (owner -1) are boundary edges, not counted.
-// Every change is >= 0, so a search's lower bound on hexes stays a bound.
+// The irregularity the closure search can cost (shelling_search.hpp): the sum
+// of edge_irregularity (check/edge_valence.hpp) over the interior edges,
+// counted by how each gluing changes it. Edges on a surface quad of the front
+// (owner -1) are boundary edges, not counted. Every change is >= 0, so a
+// search's lower bound on hexes stays a bound.
 #include <cstdint>
 #include <functional>
 #include <vector>

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "src/check/edge_valence.hpp"
 #include "src/check/validity.hpp"
 #include "src/stc/primal.hpp"
 
@@ -81,8 +82,7 @@ std::int64_t irregular_edges(const stc::Stc& stc) {
     }
     if (on_boundary) continue;
     std::sort(hexes.begin(), hexes.end());
-    const auto valence = static_cast<std::int64_t>(std::unique(hexes.begin(), hexes.end()) - hexes.begin());
-    irregular += closed ? std::abs(valence - 4) : std::max<std::int64_t>(0, valence - 4);
+    irregular += edge_irregularity(static_cast<int>(std::unique(hexes.begin(), hexes.end()) - hexes.begin()), closed);
   }
   return irregular;
 }
