@@ -32,6 +32,7 @@
 #include <fmt/format.h>
 
 #include "bench/bench_options.hpp"
+#include "engine/random_draws.hpp"
 #include "engine/rule_compiler.hpp"
 #include "src/check/validity.hpp"
 #include "src/closure/database.hpp"
@@ -91,7 +92,7 @@ QuadSurface renumbered(const QuadSurface& s, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::vector<std::uint32_t> name(s.points.size());
   for (std::uint32_t i = 0; i < name.size(); ++i) name[i] = i;
-  std::shuffle(name.begin(), name.end(), rng);
+  engine::shuffle(name.begin(), name.end(), rng);
   QuadSurface out;
   out.points.resize(s.points.size());
   for (std::size_t i = 0; i < s.points.size(); ++i) out.points[name[i]] = s.points[i];
@@ -99,7 +100,7 @@ QuadSurface renumbered(const QuadSurface& s, std::uint64_t seed) {
     const auto r = static_cast<int>(rng() % 4);
     out.quads.push_back({name[q[r % 4]], name[q[(r + 1) % 4]], name[q[(r + 2) % 4]], name[q[(r + 3) % 4]]});
   }
-  std::shuffle(out.quads.begin(), out.quads.end(), rng);
+  engine::shuffle(out.quads.begin(), out.quads.end(), rng);
   return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "engine/random_draws.hpp"
 #include "engine/rule_parser.hpp"
 
 namespace loom::engine {
@@ -169,7 +170,7 @@ bool Engine::try_random_tier(const std::vector<std::size_t>& tier, Application* 
     std::size_t total = 0;
     for (std::size_t r : tier) total += state_[r].pool.size();
     if (total == 0) return false;
-    std::size_t pick = std::uniform_int_distribution<std::size_t>(0, total - 1)(rng_);
+    std::size_t pick = uniform_below(rng_, total);
     std::size_t r = tier.front();
     for (std::size_t t : tier) {
       if (pick < state_[t].pool.size()) {
@@ -200,7 +201,7 @@ std::vector<Match> Engine::choices(Selection selection, std::size_t limit) {
       if (s.random) {
         // The pool in a seeded shuffled order; invalid anchors leave the pool.
         auto& pool = state_[r].pool;
-        std::shuffle(pool.begin(), pool.end(), rng_);
+        engine::shuffle(pool.begin(), pool.end(), rng_);
         for (std::size_t i = 0; i < pool.size() && out.size() < limit;) {
           Match m;
           if (match_at(r, pool[i], m)) {
