@@ -92,6 +92,9 @@ public:
   void release(Graph::Checkpoint c) { g_.release(c); }
   /// Closes the oldest open checkpoint (a window of recent ones costs bounded memory).
   void release_oldest() { g_.release_oldest(); }
+  /// Graph::position() and Graph::oldest_checkpoint() of the graph.
+  Graph::Checkpoint position() const { return g_.position(); }
+  Graph::Checkpoint oldest_checkpoint() const { return g_.oldest_checkpoint(); }
 
   const std::vector<Rule>& rules() const { return rules_; }
   const EngineCounters& counters() const { return counters_; }

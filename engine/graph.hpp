@@ -129,6 +129,13 @@ public:
   /// Closes the oldest open checkpoint only, dropping the records that only
   /// it needed (so a window of recent checkpoints costs bounded memory).
   void release_oldest();
+  /// Where a checkpoint opened now would be (nothing is opened). Positions
+  /// only grow: a change made at or after position p is undone by a rollback
+  /// to any checkpoint c <= p.
+  Checkpoint position() const { return undo_base_ + undo_.size(); }
+  /// The oldest open checkpoint, or position() when none is open: nothing
+  /// before it can be undone any more.
+  Checkpoint oldest_checkpoint() const { return open_.empty() ? position() : open_.front(); }
 
   // --- ids ----------------------------------------------------------------
   /// Drops tombstones and renumbers elements and slots, keeping their order.

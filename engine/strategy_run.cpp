@@ -69,7 +69,7 @@ private:
         ++open_marks_;
         const bool ok = block(n.body);
         --open_marks_;
-        if (!ok) eng_.undo(mark);
+        if (!ok) undo(mark);
         eng_.release(mark);
         if (ok || n.otherwise.empty()) return ok;
         return block(n.otherwise);
@@ -88,13 +88,29 @@ private:
     return true;
   }
 
-  void after() {
+  /// After an application the domain is shown, made at graph position `before`.
+  void after(Graph::Checkpoint before) {
+    if (domain_.after_undo) {
+      // What was shown before the oldest open checkpoint is kept for good.
+      while (!shown_.empty() && shown_.front().first < eng_.oldest_checkpoint()) shown_.pop_front();
+      if (eng_.oldest_checkpoint() <= before) shown_.emplace_back(before, app_.step);
+    }
     if (domain_.after_step) domain_.after_step(app_);
   }
 
+  /// Engine::undo, telling the domain which of the applications it was shown go.
+  void undo(Graph::Checkpoint c) {
+    eng_.undo(c);
+    while (!shown_.empty() && shown_.back().first >= c) {
+      if (domain_.after_undo) domain_.after_undo(shown_.back().second);
+      shown_.pop_back();
+    }
+  }
+
   bool apply(Engine::Selection s) {
+    const Graph::Checkpoint before = eng_.position();
     if (limit_reached() || !eng_.step(s, &app_)) return false;
-    after();
+    after(before);
     return true;
   }
 
@@ -109,13 +125,13 @@ private:
     auto go_back = [&] {
       while (!choices.empty() && backtracks < n.max_backtracks) {
         Choice& c = choices.back();
-        eng_.undo(c.before);
+        undo(c.before);
         if (c.taken + 1 < n.branching) {
           auto alternatives = eng_.choices(s, c.taken + 2);
           if (alternatives.size() > c.taken + 1) {
             ++backtracks;
             eng_.apply(std::move(alternatives[++c.taken]), &app_);
-            after();
+            after(c.before);
             return true;
           }
         }
@@ -140,8 +156,9 @@ private:
           choices.pop_front();
         }
       }
+      const Graph::Checkpoint before = eng_.position();
       if (eng_.step(s, &app_)) {
-        after();
+        after(before);
         if (goal() == 0 || !stalled()) continue;
         out_.stalled = true;
         out_.stalled_for = since_smallest;
@@ -192,8 +209,9 @@ private:
       deepen(depth);
     phase_->searched += tried;
     for (Match& m : found) {
+      const Graph::Checkpoint before = eng_.position();
       eng_.apply(std::move(m), &app_);
-      after();
+      after(before);
     }
     return !found.empty();
   }
@@ -272,8 +290,9 @@ private:
     // Short of the goal, the closest state stays, as a backtrack's progress does.
     std::sort(found.begin(), found.end(), cheaper);
     for (Match& m : found.empty() ? closest.path : found.front().path) {
+      const Graph::Checkpoint before = eng_.position();
       eng_.apply(std::move(m), &app_);
-      after();
+      after(before);
     }
     return !found.empty();
   }
@@ -285,6 +304,9 @@ private:
   StrategyOutcome out_;
   PhaseFigures* phase_ = nullptr;
   Application app_;
+  /// The applications shown to the domain that an open checkpoint could
+  /// still undo: (graph position before it, step), oldest first.
+  std::deque<std::pair<Graph::Checkpoint, std::size_t>> shown_;
   int open_marks_ = 0;
   bool stop_ = false;
 };

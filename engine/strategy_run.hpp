@@ -17,7 +17,13 @@ namespace loom::engine {
 /// application, and a bound on applications.
 struct StrategyDomain {
   std::map<std::string, std::function<std::int64_t()>> measures;
+  /// Called after each application the strategy keeps for now; a search's
+  /// trial applications are not shown, only the path it settles on.
   std::function<void(const Application&)> after_step;
+  /// Called for each application after_step showed that a backtrack or a
+  /// failed try then undoes, newest first, with its step number. After it,
+  /// the applications shown and not undone are exactly those on the graph.
+  std::function<void(std::size_t step)> after_undo;
   std::size_t max_steps = SIZE_MAX;
 };
 

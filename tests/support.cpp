@@ -4,6 +4,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <sys/wait.h>
 
 #include "src/weave/weave.hpp"
@@ -69,6 +70,26 @@ int count_lines(const std::string& s) {
   for (char c : s) n += c == '\n';
   if (!s.empty() && s.back() != '\n') ++n;
   return n;
+}
+
+std::vector<std::string> trace_applications(const std::string& trace, bool kept) {
+  std::vector<std::string> lines;
+  std::istringstream in(trace);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("# attempt ", 0) == 0) {
+      lines.clear();
+    } else if (line.rfind("undo ", 0) == 0) {
+      if (!kept) continue;
+      const std::string step = line.substr(5) + " ";
+      // Undone newest first: the last line kept is the one named.
+      if (lines.empty() || lines.back().rfind(step, 0) != 0)
+        throw std::runtime_error("trace: '" + line + "' does not undo the latest application kept");
+      lines.pop_back();
+    } else {
+      lines.push_back(line);
+    }
+  }
+  return lines;
 }
 
 ValidityReport check_against(const QuadSurface& surface, const std::vector<Hex>& hexes) {

@@ -46,6 +46,10 @@ inline std::filesystem::path data(const std::string& name) { return std::filesys
 /// Number of lines in s (a final line without '\n' counts).
 int count_lines(const std::string& s);
 
+/// The application lines of the last attempt in a `loom weave --trace`
+/// file's text; with `kept`, only those no later `undo STEP` line took back.
+std::vector<std::string> trace_applications(const std::string& trace, bool kept);
+
 /// The whole content of a file (empty if unreadable).
 std::string slurp(const std::filesystem::path& p);
 /// Writes `text` to a file, replacing it.

@@ -6,6 +6,7 @@
 #include <map>
 
 #include <fstream>
+#include <sstream>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -331,10 +332,30 @@ TEST_CASE("loom weave writes the mesh, trace, report and step pictures, the same
   CHECK(j["closed"] == true);
   CHECK(j["valid"] == true);
   int steps = j["steps"];
-  CHECK(loom::test::count_lines(slurp(dir / "a.trace")) == steps);
+  CHECK(loom::test::trace_applications(slurp(dir / "a.trace"), false).size() == static_cast<std::size_t>(steps));
   int step_pictures = 0;
   for (auto& f : std::filesystem::directory_iterator(dir / "dot" / "steps"))
     step_pictures += f.path().extension() == ".svg" && f.path().filename().string().find("sheet") == std::string::npos;
   CHECK(step_pictures == steps);
   CHECK(run_cli("check " + (dir / "a.vtk").string() + " --boundary " + (dir / "box.obj").string()).status == 0);
+
+  // The spindle never closes: the trace holds each attempt after a line naming
+  // it, and each undo line takes back the latest application still kept.
+  REQUIRE(run_cli("gen spindle -o " + (dir / "spindle.obj").string()).status == 0);
+  auto s = run_cli("weave " + (dir / "spindle.obj").string() + " -o " + (dir / "s.vtk").string() +
+                   " --closure none --attempts 3 --trace " + (dir / "s.trace").string());
+  CHECK(s.status == 1);  // no mesh
+  const std::string trace = slurp(dir / "s.trace");
+  std::size_t headers = 0, undos = 0;
+  std::istringstream lines(trace);
+  for (std::string line; std::getline(lines, line);) {
+    headers += line.rfind("# attempt ", 0) == 0;
+    undos += line.rfind("undo ", 0) == 0;
+  }
+  CHECK(headers == 3);
+  CHECK(trace.find("# attempt 2: strategy ") != std::string::npos);
+  CHECK(trace.find("seed 2\n") != std::string::npos);
+  CHECK(undos > 0);
+  const auto all = loom::test::trace_applications(trace, false), kept = loom::test::trace_applications(trace, true);
+  CHECK(kept.size() < all.size());
 }

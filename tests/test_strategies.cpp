@@ -17,6 +17,7 @@
 #include "engine/strategy_run.hpp"
 #include "src/gen/generators.hpp"
 #include "src/stc/build.hpp"
+#include "src/stc/primal.hpp"
 #include "src/weave/weave.hpp"
 #include "tests/support.hpp"
 
@@ -255,4 +256,43 @@ TEST_CASE("a broken default strategy in the rule directory is bad input: exit 2 
   CHECK(r.err.find("default.strategy:1:11: expected 'apply'") != std::string::npos);
   CHECK(r.err.find("internal error") == std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "b.vtk"));
+}
+
+TEST_CASE("the domain is told what a failed try undoes, newest first") {
+  Bench b(gen::box(2, 2, 2));
+  std::vector<std::size_t> shown, undone;
+  b.domain.after_step = [&](const engine::Application& a) { shown.push_back(a.step); };
+  b.domain.after_undo = [&](std::size_t step) { undone.push_back(step); };
+  b.run("phase p { apply cross  try { apply cross  apply cross  when front } }");
+  CHECK(shown == std::vector<std::size_t>{1, 2, 3});
+  CHECK(undone == std::vector<std::size_t>{3, 2});
+  CHECK(b.stc.hexes() == 1);
+}
+
+TEST_CASE("what a backtracking weave shows and does not undo, applied again in order, is the same weave") {
+  // randquad 16 s1 backtracks about a hundred times under the default strategy.
+  const QuadSurface surface = gen::randquad(16, 1);
+  Bench woven(surface);
+  std::vector<std::pair<std::size_t, engine::Match>> kept;
+  std::size_t undos = 0;
+  woven.domain.after_step = [&](const engine::Application& a) { kept.emplace_back(a.step, a.matched); };
+  woven.domain.after_undo = [&](std::size_t step) {
+    REQUIRE(!kept.empty());
+    CHECK(kept.back().first == step);  // newest first, and only what was shown
+    kept.pop_back();
+    ++undos;
+  };
+  const auto default_strategy = weave::default_strategy();
+  engine::check_strategy(default_strategy, woven.eng.rules(), {"front"});
+  engine::run_strategy(woven.eng, default_strategy, woven.domain);
+  REQUIRE(undos > 10);
+  REQUIRE(woven.stc.hexes() > 0);
+
+  Bench again(surface);
+  for (auto& [step, match] : kept) again.eng.apply(match);
+  CHECK(again.stc.hexes() == woven.stc.hexes());
+  CHECK(again.stc.whiskers() == woven.stc.whiskers());
+  CHECK(again.stc.graph().size() == woven.stc.graph().size());
+  const HexMesh a = stc::woven_hexes(again.stc), w = stc::woven_hexes(woven.stc);
+  CHECK(a.hexes == w.hexes);
 }

@@ -3,6 +3,8 @@
 // deterministic.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
 #include "src/closure/database.hpp"
@@ -163,6 +165,26 @@ TEST_CASE("each new attempt is told how the one before it ended") {
     CHECK(previous.whiskers_left > 0);
     CHECK(previous.left.find("whiskers (open front faces) left") != std::string::npos);
   }
+}
+
+TEST_CASE("the closure keeps the woven hexes of the attempt that left the fewest whiskers, and says which") {
+  // randquad 50 s1 with three attempts: the second leaves the fewest.
+  pipeline::MeshingOptions options;
+  options.attempts = 3;
+  options.closure = pipeline::Closure::full;
+  options.database = closure::database_file(weave::default_rules_dir());
+  options.fill_caps = fill::default_caps_dir();
+  std::vector<std::size_t> left;
+  options.before_attempt = [&](std::size_t, const engine::Strategy&, const weave::WeaveResult& previous) {
+    left.push_back(previous.whiskers_left);
+  };
+  const auto r = pipeline::mesh_surface(gen::randquad(50, 1), shipped_rules(), options);
+  left.push_back(r.weave.whiskers_left);
+  REQUIRE(r.made_by == "closed");
+  REQUIRE(left.size() == 3);
+  const auto fewest = static_cast<std::size_t>(std::min_element(left.begin(), left.end()) - left.begin()) + 1;
+  CHECK(r.woven_attempt == fewest);
+  CHECK(std::count(r.source.begin(), r.source.end(), closure::HexSource::woven) > 0);
 }
 
 TEST_CASE("a surface of genus 1 the weave leaves open is not given to the closure, which needs a sphere") {

@@ -127,14 +127,18 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
   options.on_stage = [&](const char* stage) { budget.stage(stage); };
 
   // The trace is written as the weave goes, a line a step, so that a run that
-  // stops halfway (a broken rule, a kill) keeps it. It holds the last attempt.
+  // stops halfway (a broken rule, a kill) keeps it. It holds every attempt,
+  // each after a line naming it, and says which applications were undone.
   std::ofstream trace;
-  auto restart_trace = [&] {
+  auto start_attempt_in_trace = [&](std::size_t attempt, const loom::engine::Strategy& s) {
     if (o.trace.empty()) return;
-    trace = std::ofstream(o.trace, std::ios::trunc);
-    if (!trace) loom::fail_input(o.trace, "cannot write the trace file", "choose another --trace path");
+    if (!trace.is_open()) {
+      trace = std::ofstream(o.trace, std::ios::trunc);
+      if (!trace) loom::fail_input(o.trace, "cannot write the trace file", "choose another --trace path");
+    }
+    trace << fmt::format("# attempt {}: strategy {}, seed {}\n", attempt, s.name(), s.seed) << std::flush;
   };
-  restart_trace();
+  start_attempt_in_trace(1, options.weave.strategy);
   std::optional<loom::weave::StepDumper> steps;
   if (o.dot_steps) steps.emplace(std::filesystem::path(o.dot_dir) / "steps", !o.no_svg);
   bool progress = !o.quiet && !o.progress && ::isatty(STDERR_FILENO);
@@ -152,8 +156,11 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
     }
   };
 
-  options.before_attempt = [&](std::size_t, const loom::engine::Strategy&, const loom::weave::WeaveResult&) {
-    restart_trace();
+  options.weave.after_undo = [&](std::size_t step) {
+    if (trace.is_open()) trace << fmt::format("undo {}\n", step) << std::flush;
+  };
+  options.before_attempt = [&](std::size_t attempt, const loom::engine::Strategy& s, const loom::weave::WeaveResult&) {
+    start_attempt_in_trace(attempt, s);
     if (steps) steps->clear();
   };
 

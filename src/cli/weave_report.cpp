@@ -50,6 +50,7 @@ nlohmann::json report_json(const std::string& input, const SurfaceFigures& surfa
   j["strategy"] = strategy.name();
   j["seed"] = strategy.seed;
   j["attempts"] = r.attempts;
+  j["woven_attempt"] = r.woven_attempt;
   j["backtracks"] = r.weave.backtracks;
   j["phases"] = nlohmann::json::array();
   for (const auto& p : r.weave.phases)

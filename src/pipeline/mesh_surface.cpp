@@ -264,13 +264,14 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
   const std::uint64_t first_seed = options.weave.strategy.random() ? options.weave.strategy.seed : 0;
   std::optional<HexMesh> best_woven;  // of the attempt that left the fewest whiskers
   std::vector<HexSource> best_woven_source;
-  std::size_t best_left = SIZE_MAX;
+  std::size_t best_left = SIZE_MAX, best_attempt = 0;
   for (r.attempts = 1;; ++r.attempts) {
     r.strategy = attempt.strategy;
     weave_once(r, surface, rules, attempt, options.on_stage);
     if (r.combinatorially_valid()) break;
     if (options.closure != Closure::none && r.weave.whiskers_left < best_left) {
       best_left = r.weave.whiskers_left;
+      best_attempt = r.attempts;
       std::vector<stc::Id> hexes;
       best_woven = stc::woven_over_surface(r.stc, surface.points.size(), &hexes);
       best_woven_source = sources_of(r.stc, hexes);
@@ -329,6 +330,8 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
       fill_whole_surface(r, surface, res);
     }
   }
+  const bool holds_woven = std::count(r.source.begin(), r.source.end(), HexSource::woven) > 0;
+  r.woven_attempt = !holds_woven ? 0 : r.made_by == "woven" ? r.attempts : r.made_by == "closed" ? best_attempt : 0;
   if (r.mesh) r.inversions = geometry::diagnose_inversions(*r.mesh);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

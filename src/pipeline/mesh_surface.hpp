@@ -102,6 +102,11 @@ struct MeshingResult {
   geometry::InversionDiagnosis inversions;
   double seconds = 0;                    ///< of everything
   std::size_t attempts = 1;              ///< weaves run
+  /// The attempt (1 for the first) whose woven hexes the mesh holds: the last
+  /// when the weave made the mesh, the one that left the fewest whiskers when
+  /// the closure did; 0 when no woven hex is in it (the closure peeled them
+  /// all, or a search from the surface or the fill made it).
+  std::size_t woven_attempt = 0;
   engine::Strategy strategy;             ///< of the last attempt, the one reported
   /// The mesh passes criteria 1-6 (geometry may still be bad).
   bool combinatorially_valid() const { return mesh && check && check->combinatorial_valid(); }

@@ -188,6 +188,7 @@ WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOpt
   domain.measures["irregular"] = [&stc] { return irregular_edges(stc); };
   domain.max_steps = options.max_steps ? options.max_steps : 200 * stc.faces() + 10000;
   if (options.after_step) domain.after_step = [&](const engine::Application& app) { options.after_step(app, stc); };
+  domain.after_undo = options.after_undo;
   engine::check_strategy(options.strategy, eng.rules(), strategy_measures());
   const engine::StrategyOutcome run = engine::run_strategy(eng, options.strategy, domain);
   result.backtracks = run.backtracks;

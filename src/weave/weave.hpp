@@ -41,6 +41,9 @@ struct WeaveOptions {
   std::vector<std::string> check_rules;
   /// Called after every application (trace, pictures, progress).
   std::function<void(const engine::Application&, const stc::Stc&)> after_step;
+  /// Called for each application after_step saw that the strategy then
+  /// undid (a backtrack), newest first (engine::StrategyDomain::after_undo).
+  std::function<void(std::size_t step)> after_undo;
 };
 
 struct WeaveResult {
