@@ -1,7 +1,8 @@
 // bench_closure: closure in figures, from whole surfaces.
 //
 //   bench_closure [--quads A-B] [--randquad LIST] [--seeds N] [--shapes]
-//                 [--pipeline] [--expansions N] [--weight W] [--irregularity W] [--database FILE]
+//                 [--pipeline [--prefer quality|fewest-hexes]] [--expansions N] [--weight W]
+//                 [--irregularity W] [--database FILE]
 //                 [--shard K/N] [--csv FILE [--resume]]
 //   bench_closure --merge A.csv B.csv ...
 //
@@ -15,7 +16,7 @@
 // hexes, expansions and states a second, and where the time went. With
 // --pipeline it runs what `loom weave` does by default (the shipped rules, 16
 // attempts, cavity closure, the whole-surface fill last) and says which stage
-// made each mesh. --shard K/N runs inputs K-1, K-1+N, ...; --csv writes one
+// made each mesh (--prefer: which of two meshes it keeps). --shard K/N runs inputs K-1, K-1+N, ...; --csv writes one
 // row per input (--resume: after the rows FILE already has, the inputs it
 // lacks); --merge sums shard CSVs. Figures, not a test: the machine is
 // shared, compare within a run.
@@ -186,6 +187,13 @@ int main(int argc, char** argv) {
   app.add_option("--weight", options.limits.weight, "weight of the search's estimate (default 20)");
   app.add_option("--irregularity", options.irregularity_weight,
                  "weight of the hexes' irregularity in the search's cost (default 0: fewest hexes)");
+  pipeline::Prefer prefer = pipeline::Prefer::quality;
+  app.add_option("--prefer", prefer,
+                 "with --pipeline, which of two meshes a run keeps: quality (default, as loom weave) or fewest-hexes "
+                 "(the combinatorial corpus's figures)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, pipeline::Prefer>{{"quality", pipeline::Prefer::quality},
+                                                                              {"fewest-hexes", pipeline::Prefer::fewest_hexes}},
+                                             CLI::ignore_case));
   app.add_option("--growth", options.max_growth, "fronts larger than the start by more than this are not explored (default 8)");
   app.add_option("--database", database, "database file ('' for none)");
   app.add_option("--shard", shard, "run only inputs K-1, K-1+N, ... (K/N)");
@@ -267,6 +275,7 @@ int main(int argc, char** argv) {
       m.database = database;
       m.fill_caps = fill::default_caps_dir();
       m.search = options;
+      m.prefer = prefer;
       const auto r = pipeline::mesh_surface(in.surface, rules, m);
       o.closed = r.weave.closed, o.made_by = r.made_by, o.seconds = r.seconds;
       o.comb_valid = r.combinatorially_valid(), o.valid = o.comb_valid && r.check->valid();

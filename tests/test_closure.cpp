@@ -292,8 +292,10 @@ TEST_CASE("closure is deterministic: the same surface gives the same hexes, and 
 pipeline::MeshingResult mesh_without_fill(const QuadSurface& surface,
                                           std::map<std::string, int>* stages = nullptr,
                                           std::size_t wide_expansions = pipeline::wide_search_defaults().limits.max_expansions,
-                                          std::size_t symmetric_depth = closure::SymmetricOptions{}.beam.max_depth) {
+                                          std::size_t symmetric_depth = closure::SymmetricOptions{}.beam.max_depth,
+                                          pipeline::Prefer prefer = pipeline::Prefer::quality) {
   pipeline::MeshingOptions options;
+  options.prefer = prefer;
   options.symmetric.beam.max_depth = symmetric_depth;
   if (stages) options.on_stage = [stages](const char* stage) { ++(*stages)[stage]; };
   options.wide_search.limits.max_expansions = wide_expansions;
@@ -339,14 +341,48 @@ TEST_CASE("a small surface still over 72 hexes after the direct search gets a sy
   // search, 81 in symmetric pairs (not kept). The wide search's own budget
   // (1,000,000 expansions, 255 s) finds 67; here it gets 2,000 and the
   // symmetric search two levels, so only that they run in turn, and what
-  // they may keep, is tested.
+  // they may keep by hexes, is tested.
   const QuadSurface surface = gen::quadrangulation(14, 54);
   std::map<std::string, int> stages;
-  const pipeline::MeshingResult r = mesh_without_fill(surface, &stages, 2'000, 2);
+  const pipeline::MeshingResult r = mesh_without_fill(surface, &stages, 2'000, 2, pipeline::Prefer::fewest_hexes);
   REQUIRE(r.combinatorially_valid());
   CHECK(stages["searching symmetric pairs"] == 1);
   CHECK(stages["searching from the surface"] == 2);
   CHECK(r.mesh->hexes.size() - r.boundary_layer.hexes_added <= 79);
+}
+
+TEST_CASE("by quality the run keeps a valid mesh over a smaller one with inverted hexes; by hexes, the smaller" *
+          doctest::skip(kSkipFullSearch)) {
+  // randquad 14 s3: the cavity closure gives 108 hexes (14 of them the
+  // boundary layer), none <= 0 once placed; the search from the surface 70
+  // (56 before the layer, within the published 72), 12 of them <= 0.
+  auto run = [](pipeline::Prefer prefer, const QuadSurface& surface = gen::randquad(14, 3)) {
+    pipeline::MeshingOptions options;
+    options.prefer = prefer;
+    options.attempts = 16;
+    options.closure = pipeline::Closure::full;
+    options.database = database_file(weave::default_rules_dir());
+    options.fill_caps = fill::default_caps_dir();
+    const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+    return pipeline::mesh_surface(surface, rules, options);
+  };
+  const pipeline::MeshingResult quality = run(pipeline::Prefer::quality), fewest = run(pipeline::Prefer::fewest_hexes);
+  REQUIRE(quality.combinatorially_valid());
+  REQUIRE(fewest.combinatorially_valid());
+  CHECK(quality.check->quality.below_zero == 0);
+  CHECK(fewest.check->quality.below_zero > 0);
+  CHECK(quality.mesh->hexes.size() > fewest.mesh->hexes.size());
+  CHECK(fewest.mesh->hexes.size() - fewest.boundary_layer.hexes_added <= 72);
+  CHECK(quality.made_by == "closed");
+  CHECK(fewest.made_by == "searched");
+
+  // randquad 22 s4: the cavity closure's 91 hexes (69 before the layer, within
+  // the bound) keep hexes <= 0, so by quality the search from the surface gets
+  // its full budget, not the short one, and finds 77 with none.
+  const pipeline::MeshingResult searched = run(pipeline::Prefer::quality, gen::randquad(22, 4));
+  REQUIRE(searched.combinatorially_valid());
+  CHECK(searched.made_by == "searched");
+  CHECK(searched.check->quality.below_zero == 0);
 }
 
 // Sixteen weave attempts on one input are the point of this case too: 8 s

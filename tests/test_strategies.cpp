@@ -159,6 +159,8 @@ TEST_CASE("loom weave runs a strategy file, reports its phases, and refuses a br
   CHECK(j["phases"][0]["steps"].get<int>() > 0);
   CHECK(j["phases"][1]["name"] == "repair");
   CHECK(j["hexes"] == 8);
+  CHECK(j["woven_attempt"] == 1);
+  CHECK(j["prefer"] == "quality");
 
   // The weave's measures as a beam's goal and cost, through the CLI: it weaves the box alone.
   {

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_parser.hpp"
@@ -122,6 +123,7 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
                              bound.quads_below_0_2 == 1 ? "s" : "ve", bound.least_sine, bound.least_sine);
   options.attempts = o.attempts;
   options.closure = o.closure;
+  options.prefer = o.prefer;
   options.database = loom::closure::database_file(loom::weave::default_rules_dir());
   options.fill_caps = loom::fill::default_caps_dir();
   options.on_stage = [&](const char* stage) { budget.stage(stage); };
@@ -244,9 +246,9 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
                              layer, quality);
   else if (result.made_by == "searched")
     std::cout << fmt::format("searched: {} hexes = {} searched + {} from the database + {} filled + {} pillow, from the "
-                             "surface itself, fewer than the weave and its cavities gave{}{}; {}\n",
+                             "surface itself, better by --prefer {} than what the weave and its cavities gave{}{}; {}\n",
                              hexes, count(HexSource::searched), count(HexSource::database), count(HexSource::filled),
-                             count(HexSource::pillow),
+                             count(HexSource::pillow), o.prefer == loom::pipeline::Prefer::quality ? "quality" : "fewest-hexes",
                              result.weave.closed ? fmt::format(" (the weave: {} hexes)", result.stc.hexes()) : "",
                              layer, quality);
   else
@@ -288,13 +290,29 @@ void add_weave_options(CLI::App& app, WeaveCommandOptions& o) {
   app.add_option("--report", o.report, "write a JSON report to this file");
   app.add_option("--plot", o.plot, "with the mesh, write a bar chart (SVG) of its scaled Jacobians to this file");
   app.add_flag("--partial", o.partial, "when the weave does not close, write the hexes woven so far and the STC (DOT/SVG) for inspection");
-  const std::map<std::string, loom::pipeline::Closure> closures{{"none", loom::pipeline::Closure::none},
-                                                                 {"search", loom::pipeline::Closure::search},
-                                                                 {"full", loom::pipeline::Closure::full}};
-  app.add_option("--closure", o.closure,
-                 "what runs when no weave gives a valid mesh: full (default: cavity search, database and fill, then "
-                 "the whole-surface fill), search (cavity search and database only) or none (the weave alone)")
-      ->transform(CLI::CheckedTransformer(closures, CLI::ignore_case));
+  // Named choices: a string checked against the names (so a wrong one is
+  // answered with the names), then looked up.
+  auto add_choice = [&app](const char* flag, auto& target, auto names, const char* help) {
+    std::vector<std::string> keys;
+    for (const auto& [name, value] : names) keys.push_back(name);
+    app.add_option_function<std::string>(
+           flag, [&target, names](const std::string& v) {
+             target = names.at(CLI::detail::to_lower(v));
+           }, help)
+        ->check(CLI::IsMember(keys, CLI::ignore_case).description(""))
+        ->type_name(fmt::format("{{{}}}", fmt::join(keys, ",")));
+  };
+  add_choice("--closure", o.closure,
+             std::map<std::string, loom::pipeline::Closure>{{"full", loom::pipeline::Closure::full},
+                                                            {"none", loom::pipeline::Closure::none},
+                                                            {"search", loom::pipeline::Closure::search}},
+             "what runs when no weave gives a valid mesh: full (default: cavity search, database and fill, then "
+             "the whole-surface fill), search (cavity search and database only) or none (the weave alone)");
+  add_choice("--prefer", o.prefer,
+             std::map<std::string, loom::pipeline::Prefer>{{"quality", loom::pipeline::Prefer::quality},
+                                                           {"fewest-hexes", loom::pipeline::Prefer::fewest_hexes}},
+             "which of two meshes the run keeps: quality (default: fewer hexes with a scaled Jacobian <= 0, then "
+             "< 0.2, then fewer hexes) or fewest-hexes");
   app.add_flag_callback("--no-fill", [&o] { o.closure = loom::pipeline::Closure::none; }, "the same as --closure none");
   app.add_flag("-q,--quiet", o.quiet, "no progress line");
   app.add_flag("--progress", o.progress, "a progress line on stderr as each stage starts and every 5 s, also when stderr is not a terminal");

@@ -24,6 +24,7 @@ struct WeaveCommandOptions {
   std::uint64_t seed = 0;
   std::size_t attempts = 16;
   pipeline::Closure closure = pipeline::Closure::full;
+  pipeline::Prefer prefer = pipeline::Prefer::quality;
   bool seed_given = false, dot_steps = false, partial = false, quiet = false, no_svg = false;
   bool progress = false;
   double max_seconds = 0;

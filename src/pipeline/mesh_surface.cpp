@@ -85,6 +85,14 @@ bool within_published_bound(const MeshingResult& r) {
   return r.combinatorially_valid() && hexes_before_layer(r) <= kPublishedSmallBound;
 }
 
+/// Whether a small surface's mesh needs the searches that look for a smaller
+/// one: over the published bound and, when quality decides, not valid by
+/// criterion 7 either (a smaller mesh would have to beat it placed).
+bool wants_smaller(const MeshingResult& r, Prefer prefer) {
+  if (within_published_bound(r)) return false;
+  return prefer == Prefer::fewest_hexes || !r.combinatorially_valid() || r.smoothing.below_zero_after > 0;
+}
+
 /// Takes `c` as the result.
 void adopt(MeshingResult& r, Candidate&& c, std::string made_by) {
   r.mesh = std::move(c.mesh);
@@ -185,12 +193,19 @@ void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMe
   }
 }
 
-/// A mesh a search from the surface closed, kept if it beats the mesh there is.
-void adopt_if_fewer(MeshingResult& r, ClosedMesh&& closed, const QuadSurface& surface) {
-  if (!closed.complete || (r.combinatorially_valid() && closed.mesh.hexes.size() >= hexes_before_layer(r))) return;
+/// A mesh a search from the surface closed, kept if it beats the mesh there
+/// is as `prefer` says. By hexes, a candidate with no fewer is not even placed.
+void adopt_if_better(MeshingResult& r, ClosedMesh&& closed, const QuadSurface& surface, Prefer prefer) {
+  if (!closed.complete) return;
+  const std::size_t hexes = closed.mesh.hexes.size();
+  const bool fewer = !r.combinatorially_valid() || hexes < hexes_before_layer(r);
+  if (prefer == Prefer::fewest_hexes && !fewer) return;
   const ClosureReport report = closed.report;
   Candidate c = placed_candidate(std::move(closed), surface);
   if (!c.valid()) return;
+  if (prefer == Prefer::quality && r.combinatorially_valid() && !improves(c.smoothing, r.smoothing) &&
+      (improves(r.smoothing, c.smoothing) || !fewer))
+    return;
   adopt(r, std::move(c), "searched");
   r.closure = report;
 }
@@ -201,10 +216,10 @@ void search_from_surface(MeshingResult& r, const QuadSurface& surface, Resources
                          const closure::ClosureOptions& search, bool fill) {
   if (options.on_stage) options.on_stage("searching from the surface");
   try {
-    adopt_if_fewer(r,
-                   close_cavities(surface, HexMesh{surface.points, {}}, res.database(),
-                                  fill ? res.caps() : std::vector<fill::Cap>{}, search),
-                   surface);
+    adopt_if_better(r,
+                    close_cavities(surface, HexMesh{surface.points, {}}, res.database(),
+                                   fill ? res.caps() : std::vector<fill::Cap>{}, search),
+                    surface, options.prefer);
   } catch (const InputError& e) {
     if (r.closure_failure.empty()) r.closure_failure = e.what();
   }
@@ -217,7 +232,7 @@ void search_symmetric_pairs(MeshingResult& r, const QuadSurface& surface, Resour
   try {
     const closure::ClosureResult closed =
         closure::close_symmetric(quadmap::from_surface(surface), res.database(), options.symmetric);
-    if (closed.closed) adopt_if_fewer(r, mesh_of_closure(surface, closed), surface);
+    if (closed.closed) adopt_if_better(r, mesh_of_closure(surface, closed), surface, options.prefer);
   } catch (const InputError& e) {
     if (r.closure_failure.empty()) r.closure_failure = e.what();
   }
@@ -260,6 +275,7 @@ closure::ClosureOptions wide_search_defaults() {
 MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const MeshingOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   MeshingResult r;
+  r.prefer = options.prefer;
   weave::WeaveOptions attempt = options.weave;
   const std::uint64_t first_seed = options.weave.strategy.random() ? options.weave.strategy.seed : 0;
   std::optional<HexMesh> best_woven;  // of the attempt that left the fewest whiskers
@@ -300,19 +316,23 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
       search.limits.max_expansions = expansions;
       return search;
     };
-    // Beside a valid mesh within the published bound, only a short search: it
-    // has to find a smaller one, so it counts hexes alone.
+    // Beside a valid mesh within the published bound (by quality, with no hex
+    // <= 0 either), only a short search: it has to find a smaller one, so it
+    // counts hexes alone.
     if (small) {
-      closure::ClosureOptions fewest = budget(within_published_bound(r) ? kBesideValidExpansions : kSmallFrontExpansions);
+      const bool settled = within_published_bound(r) &&
+                           (options.prefer == Prefer::fewest_hexes || r.smoothing.below_zero_after == 0);
+      closure::ClosureOptions fewest = budget(settled ? kBesideValidExpansions : kSmallFrontExpansions);
       fewest.irregularity_weight = 0;
       search_from_surface(r, surface, res, options, fewest, false);
-      // Still over the bound: first the search in symmetric pairs (16 439:
-      // 78 hexes to 68 in a minute), then the wide search. They can only
+      // Still over the bound (by quality, with a hex <= 0 too): first the
+      // search in symmetric pairs (16 439: 78 hexes to 68 in a minute), then
+      // the wide search. They can only
       // improve a mesh the run already has: when one runs out of memory
       // (--max-memory), it gives way and that mesh stays.
-      if (surface.quads.size() <= kPublishedSmallQuads && !within_published_bound(r)) try {
+      if (surface.quads.size() <= kPublishedSmallQuads && wants_smaller(r, options.prefer)) try {
           search_symmetric_pairs(r, surface, res, options);
-          if (!within_published_bound(r)) search_from_surface(r, surface, res, options, options.wide_search, false);
+          if (wants_smaller(r, options.prefer)) search_from_surface(r, surface, res, options, options.wide_search, false);
         } catch (const std::bad_alloc&) {
           if (!r.combinatorially_valid()) throw;
           r.wide_search_stopped = "out of memory";

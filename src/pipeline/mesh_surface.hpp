@@ -11,7 +11,7 @@
 //      search and the database, then (Closure::full) filled where the search
 //      stopped short. A surface of at most kDirectSearchQuads quads, and one
 //      whose cavities needed the fill, is also closed by search from the
-//      surface itself (no woven hex), and the smaller valid mesh kept;
+//      surface itself (no woven hex), and the better mesh kept (Prefer);
 //   3. whole-surface fill (Closure::full), the last resort.
 // Then node placement and the validity check.
 #include <cstddef>
@@ -51,6 +51,16 @@ inline constexpr std::size_t kDirectSearchQuads = kSmallFrontQuads;
 /// 20,000,000 open states, and a seconds guard of an hour.
 closure::ClosureOptions wide_search_defaults();
 
+/// Which of two meshes, each passing criteria 1-6, the run keeps.
+enum class Prefer {
+  /// The one with fewer hexes <= 0 once placed, then fewer < 0.2, then fewer
+  /// hexes: a mesh a solver accepts beats a smaller one it refuses.
+  quality,
+  /// The one with fewer hexes (before the boundary layer): the combinatorial
+  /// corpus's measure, against the published bounds.
+  fewest_hexes,
+};
+
 struct MeshingOptions {
   weave::WeaveOptions weave;
   /// Weaves in all (see step 1); deterministic: the same attempts in the same order.
@@ -63,6 +73,7 @@ struct MeshingOptions {
   /// "filling the surface" (progress).
   std::function<void(const char* stage)> on_stage;
   Closure closure = Closure::none;
+  Prefer prefer = Prefer::quality;
   /// The database file and the fill's caps directory, read when first needed.
   std::filesystem::path database, fill_caps;
   /// The cavity search (irregularity_weight 0 by default: docs/results.md
@@ -70,7 +81,8 @@ struct MeshingOptions {
   /// published bound counts hexes alone whatever the weight.
   closure::ClosureOptions search;
   /// The wide search a surface of at most 20 quads gets when the searches
-  /// before it leave it over 72 hexes (mesh_surface.cpp has the figures).
+  /// before it leave it over 72 hexes (mesh_surface.cpp has the figures),
+  /// and, under Prefer::quality, with a hex <= 0.
   closure::ClosureOptions wide_search = wide_search_defaults();
   /// The symmetric search such a surface gets first, when it has a symmetry
   /// of order 2 (closure/symmetric_search.hpp).
@@ -107,6 +119,7 @@ struct MeshingResult {
   /// the closure did; 0 when no woven hex is in it (the closure peeled them
   /// all, or a search from the surface or the fill made it).
   std::size_t woven_attempt = 0;
+  Prefer prefer = Prefer::quality;       ///< what chose the mesh (MeshingOptions::prefer)
   engine::Strategy strategy;             ///< of the last attempt, the one reported
   /// The mesh passes criteria 1-6 (geometry may still be bad).
   bool combinatorially_valid() const { return mesh && check && check->combinatorial_valid(); }
