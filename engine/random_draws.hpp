@@ -8,6 +8,7 @@
 // from a 64-bit generator (Debian 12's, on which the project's figures were
 // measured): the figures stay, and now hold everywhere.
 // tests/test_random_draws.cpp checks both.
+#include <cstddef>
 #include <cstdint>
 #include <iterator>
 #include <random>
