@@ -269,11 +269,8 @@ int main(int argc, char** argv) {
     Outcome o;
     o.input = in.name, o.group = in.group, o.quads = in.surface.quads.size();
     if (pipeline) {
-      pipeline::MeshingOptions m;
-      m.attempts = 16;
-      m.closure = pipeline::Closure::full;
+      pipeline::MeshingOptions m = pipeline::default_meshing_options();
       m.database = database;
-      m.fill_caps = fill::default_caps_dir();
       m.search = options;
       m.prefer = prefer;
       const auto r = pipeline::mesh_surface(in.surface, rules, m);

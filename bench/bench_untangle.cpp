@@ -126,11 +126,7 @@ void success(const std::vector<int>& counts) {
     double seconds = 0;
     const auto maps = quadmap::three_connected_quadrangulations(f);
     for (std::size_t i = 0; i < maps.size(); ++i) {
-      pipeline::MeshingOptions m;
-      m.attempts = 16;
-      m.closure = pipeline::Closure::full;
-      m.database = closure::database_file(weave::default_rules_dir());
-      m.fill_caps = fill::default_caps_dir();
+      const pipeline::MeshingOptions m = pipeline::default_meshing_options();
       const auto r = pipeline::mesh_surface(gen::quadrangulation(maps[i], static_cast<int>(i)), rules, m);
       ++inputs;
       seconds += r.seconds;

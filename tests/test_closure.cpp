@@ -357,12 +357,8 @@ TEST_CASE("by quality the run keeps a valid mesh over a smaller one with inverte
   // boundary layer), none <= 0 once placed; the search from the surface 70
   // (56 before the layer, within the published 72), 12 of them <= 0.
   auto run = [](pipeline::Prefer prefer, const QuadSurface& surface = gen::randquad(14, 3)) {
-    pipeline::MeshingOptions options;
+    pipeline::MeshingOptions options = pipeline::default_meshing_options();
     options.prefer = prefer;
-    options.attempts = 16;
-    options.closure = pipeline::Closure::full;
-    options.database = database_file(weave::default_rules_dir());
-    options.fill_caps = fill::default_caps_dir();
     const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
     return pipeline::mesh_surface(surface, rules, options);
   };

@@ -83,11 +83,7 @@ TEST_CASE("the untangler sees a hex's centre: a twisted hex with every corner po
 TEST_CASE("Schneiders' pyramid comes out of loom weave's pipeline with every scaled Jacobian positive") {
   // Before the global untangling: 48 hexes (no boundary layer), 13 of them <= 0.
   const QuadSurface surface = gen::schneiders();
-  pipeline::MeshingOptions options;  // loom weave's defaults
-  options.attempts = 16;
-  options.closure = pipeline::Closure::full;
-  options.database = closure::database_file(weave::default_rules_dir());
-  options.fill_caps = fill::default_caps_dir();
+  const pipeline::MeshingOptions options = pipeline::default_meshing_options();
   const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
   const pipeline::MeshingResult r = pipeline::mesh_surface(surface, rules, options);
   REQUIRE(r.combinatorially_valid());

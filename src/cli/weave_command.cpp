@@ -110,7 +110,7 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
   loom::hex_format_of(o.output);  // an unwritable format is refused before any work
   // Rules and strategy before the surface: a broken file is refused before Gmsh's meshing.
   auto rules = load_rules(o.rules.empty() ? loom::weave::default_rules_dir().string() : o.rules);
-  loom::pipeline::MeshingOptions options;
+  loom::pipeline::MeshingOptions options = loom::pipeline::default_meshing_options();
   options.weave.strategy = parse_strategy(o, rules);
   options.weave.check_rules = checked_rules(o, rules);
   RunBudget budget(o.max_seconds, o.max_memory, o.progress);
@@ -124,8 +124,6 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
   options.attempts = o.attempts;
   options.closure = o.closure;
   options.prefer = o.prefer;
-  options.database = loom::closure::database_file(loom::weave::default_rules_dir());
-  options.fill_caps = loom::fill::default_caps_dir();
   options.on_stage = [&](const char* stage) { budget.stage(stage); };
 
   // The trace is written as the weave goes, a line a step, so that a run that

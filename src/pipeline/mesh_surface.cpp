@@ -272,6 +272,15 @@ closure::ClosureOptions wide_search_defaults() {
   return wide;
 }
 
+MeshingOptions default_meshing_options() {
+  MeshingOptions o;
+  o.attempts = 16;
+  o.closure = Closure::full;
+  o.database = closure::database_file(weave::default_rules_dir());
+  o.fill_caps = fill::default_caps_dir();
+  return o;
+}
+
 MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule> rules, const MeshingOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   MeshingResult r;

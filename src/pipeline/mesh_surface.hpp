@@ -126,6 +126,10 @@ struct MeshingResult {
   bool filled() const { return made_by == "filled"; }
 };
 
+/// What `loom weave` runs with no options: 16 attempts, Closure::full, the
+/// shipped database and fill caps, Prefer::quality.
+MeshingOptions default_meshing_options();
+
 /// Weaves a validated, outward-oriented surface with `rules`, then closes or
 /// fills as MeshingOptions::closure allows. A rule that fails while it runs
 /// throws engine::RuleError naming its file and line.
