@@ -37,6 +37,16 @@ inline RuleSet parse_set(const std::string& token) {
   throw std::runtime_error("bench_weave: unknown rule set '" + token + "' (two, shipped)");
 }
 
+/// The strategy each set weaves under: the shipped one for every shipped rule;
+/// `priority` for cross and seam, as `loom weave --rules DIR` gives a folder
+/// without a strategies/default.strategy (the shipped one names
+/// pillow_improper, which that set has not).
+inline weave::WeaveOptions weave_options(RuleSet set) {
+  weave::WeaveOptions options;
+  if (set == RuleSet::two) options.strategy = weave::strategy_named("priority");
+  return options;
+}
+
 inline std::vector<engine::Rule> load_rules(RuleSet set) {
   const engine::Schema& schema = *stc::StcSchema::get().schema;
   const std::filesystem::path dir = weave::default_rules_dir();
@@ -125,7 +135,7 @@ inline RunFigures run_one(int n, RuleSet set) {
   f.build_s = total.cpu();
 
   Stopwatch weaving;
-  weave::WeaveResult woven = weave::weave(stc, std::move(rules), {});
+  weave::WeaveResult woven = weave::weave(stc, std::move(rules), weave_options(set));
   f.weave_s = weaving.cpu();
   f.wall_weave_s = weaving.wall();
   f.weave_peak_rss = status_bytes("VmHWM");
@@ -157,7 +167,9 @@ inline RunFigures run_one(int n, RuleSet set) {
 /// hexes and verdict (a guard against the two drifting apart).
 inline void check_against_pipeline(const RunFigures& staged, RuleSet set) {
   QuadSurface surface = gen::box(staged.n, staged.n, staged.n);
-  pipeline::MeshingResult r = pipeline::mesh_surface(surface, load_rules(set), {});
+  pipeline::MeshingOptions options;
+  options.weave = weave_options(set);
+  pipeline::MeshingResult r = pipeline::mesh_surface(surface, load_rules(set), options);
   if (r.weave.steps != staged.steps || r.stc.hexes() != staged.hexes || r.combinatorially_valid() != staged.valid)
     throw std::logic_error(
         fmt::format("bench_weave: box {}^3, {} rules: mesh_surface made {} hexes in {} steps, the staged run "
