@@ -241,7 +241,7 @@ void Engine::undo(Graph::Checkpoint c) {
   g_.set_change_log(&log_);
   g_.rollback(c);
   g_.set_change_log(nullptr);
-  process_changes();
+  process_changes(g_.id_bound());
 }
 
 void Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
@@ -251,6 +251,7 @@ void Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
   }
   log_.clear();
   g_.set_change_log(&log_);
+  const Id first_new = g_.id_bound();
   const Graph::Checkpoint before = g_.checkpoint();
   // The rewrite's changes reach the candidate queues only once it is kept,
   // so a rollback leaves them as they were.
@@ -281,7 +282,7 @@ void Engine::apply_rule(std::size_t r, Match& m, Application* applied) {
     applied->result = m;
   }
   if (full_rescan_) rescan();
-  else process_changes();
+  else process_changes(first_new);
 }
 
 void Engine::check_after(Invariant check, const std::vector<std::string>& rules) {

@@ -118,6 +118,7 @@ private:
     std::vector<bool> queued, pooled;  ///< in `queue` (a rule without order), in `pool`
     bool use_queue = false, use_pool = false;  ///< a selection in use picks it so
     std::vector<std::vector<int>> relevant;  ///< relevance_key -> variables
+    std::vector<std::vector<int>> relevant_to_negatives;  ///< relevance_key -> variables read by negatives only
   };
   struct SelectionState {
     std::vector<std::vector<std::size_t>> tiers;  ///< rule indices, first tier first
@@ -134,7 +135,9 @@ private:
   std::size_t relevance_key(KindId kind, int change, std::size_t which) const {
     return (static_cast<std::size_t>(kind) * 3 + static_cast<std::size_t>(change)) * width_ + which;
   }
-  void process_changes();
+  /// Offers the anchors the logged changes concern; elements with ids from
+  /// `first_new` on were created by the step.
+  void process_changes(Id first_new);
   /// Adds to anchors_ the anchors whose match may involve `element` as `var`.
   void trace(const Rule& rule, int var, Id element);
   /// Pops candidates of `rule` until one still matches with an up-to-date key.

@@ -11,19 +11,26 @@ namespace loom::engine {
 
 // For each rule, which variables a change (element kind, change kind, port or
 // attribute) can concern: looked up once per change instead of searched.
+// Variables a change reaches only through a negative pattern are listed
+// apart: an element the step created, or a slot it added, can only make a
+// negative pattern match, so it cannot give the rule a match it had not.
 void Engine::index_relevance() {
   const Schema& schema = g_.schema();
   width_ = std::max(schema.port_count(), schema.attribute_count()) + 1;
   for (std::size_t r = 0; r < rules_.size(); ++r) {
     auto& table = state_[r].relevant;
+    auto& negative = state_[r].relevant_to_negatives;
     table.assign(schema.kind_count() * 3 * width_, {});
+    negative.assign(table.size(), {});
     const Rule& rule = rules_[r];
     for (int v = 0; v < static_cast<int>(rule.vars.size()); ++v) {
       const Variable& var = rule.vars[v];
       if (var.created || var.nac == -2) continue;
-      for (PortId p : var.out_ports) table[relevance_key(var.kind, 0, p)].push_back(v);
+      auto& own = var.nac >= 0 ? negative : table;
+      for (PortId p : var.out_ports) own[relevance_key(var.kind, 0, p)].push_back(v);
+      for (AttrId a : var.attrs) own[relevance_key(var.kind, 2, a)].push_back(v);
       for (PortId p : var.in_ports) table[relevance_key(var.kind, 1, p)].push_back(v);
-      for (AttrId a : var.attrs) table[relevance_key(var.kind, 2, a)].push_back(v);
+      for (PortId p : var.negative_in_ports) negative[relevance_key(var.kind, 1, p)].push_back(v);
     }
   }
 }
@@ -51,13 +58,12 @@ void Engine::trace(const Rule& rule, int var, Id element) {
   anchors_.insert(anchors_.end(), current_.begin(), current_.end());
 }
 
-void Engine::process_changes() {
-  std::sort(log_.begin(), log_.end(), [](const Graph::Change& a, const Graph::Change& b) {
-    return std::tie(a.element, a.kind, a.which) < std::tie(b.element, b.kind, b.which);
-  });
-  log_.erase(std::unique(log_.begin(), log_.end(), [](const Graph::Change& a, const Graph::Change& b) {
-               return a.element == b.element && a.kind == b.kind && a.which == b.which;
-             }), log_.end());
+void Engine::process_changes(Id first_new) {
+  auto fields = [](const Graph::Change& c) { return std::tie(c.element, c.kind, c.which, c.owner); };
+  std::sort(log_.begin(), log_.end(), [&](const Graph::Change& a, const Graph::Change& b) { return fields(a) < fields(b); });
+  log_.erase(std::unique(log_.begin(), log_.end(),
+                         [&](const Graph::Change& a, const Graph::Change& b) { return fields(a) == fields(b); }),
+             log_.end());
   using Kind = Graph::Change::Kind;
   for (std::size_t r = 0; r < rules_.size(); ++r) {
     if (!state_[r].use_queue && !state_[r].use_pool) continue;
@@ -67,6 +73,10 @@ void Engine::process_changes() {
       for (Id a : g_.members(rule.vars[rule.anchor].kind)) offer(r, a);
       continue;
     }
+    // A match that only a negative pattern stops is found again when chosen;
+    // only an order key (which a lost match may lower) or a random pool
+    // (whose size the draws read) needs the anchor offered again.
+    const bool skip_new_negatives = !rule.order && !state_[r].use_pool;
     anchors_.clear();
     seeds_.clear();  // (variable, element) pairs to trace, each once
     for (const Graph::Change& c : log_) {
@@ -78,7 +88,11 @@ void Engine::process_changes() {
       }
       if (c.kind == Kind::removed) continue;
       int ck = c.kind == Kind::out ? 0 : c.kind == Kind::in ? 1 : 2;
-      for (int v : state_[r].relevant[relevance_key(k, ck, c.which)]) seeds_.push_back({v, c.element});
+      const std::size_t key = relevance_key(k, ck, c.which);
+      for (int v : state_[r].relevant[key]) seeds_.push_back({v, c.element});
+      const bool from_new = (c.kind == Kind::in ? c.owner : c.element) >= first_new;
+      if (!(skip_new_negatives && from_new))
+        for (int v : state_[r].relevant_to_negatives[key]) seeds_.push_back({v, c.element});
       for (const CountWatch& w : rule.count_watches) {
         bool reads = (c.kind == Kind::attribute && std::count(w.attrs.begin(), w.attrs.end(), c.which)) ||
                      (c.kind == Kind::out && std::count(w.ports.begin(), w.ports.end(), c.which));

@@ -61,8 +61,8 @@ void Graph::set_slot(SlotId s, Id target) {
   if (log_) {
     auto port = slot_port(s);
     log_->push_back({sl.owner, Change::Kind::out, port});
-    if (sl.target != no_element) log_->push_back({sl.target, Change::Kind::in, port});
-    if (target != no_element) log_->push_back({target, Change::Kind::in, port});
+    if (sl.target != no_element) log_->push_back({sl.target, Change::Kind::in, port, sl.owner});
+    if (target != no_element) log_->push_back({target, Change::Kind::in, port, sl.owner});
   }
   if (!open_.empty()) undo_.push_back({UndoRecord::Kind::slot, s, sl.target, 0});
   if (sl.target != no_element) {

@@ -111,6 +111,7 @@ public:
     Id element;
     Kind kind;
     std::uint16_t which;  ///< port (out, in) or attribute
+    Id owner = no_element;  ///< in: the owner of the slot that changed
   };
   /// While set, every change is appended to `log` (nullptr stops logging).
   void set_change_log(std::vector<Change>* log) { log_ = log; }

@@ -84,7 +84,10 @@ struct Variable {
   enum class Via : std::uint8_t { anchor, lookup, incoming, scan } via = Via::anchor;
   PortId via_port = 0;
   std::vector<PortId> out_ports;   ///< ports of this variable the pattern reads
-  std::vector<PortId> in_ports;    ///< incoming ports whose changes matter (counts, negatives)
+  std::vector<PortId> in_ports;    ///< incoming ports a count reads
+  /// Incoming ports only negative patterns read (and no count): a slot added
+  /// to one can only make a negative pattern match, never the rule.
+  std::vector<PortId> negative_in_ports;
   std::vector<AttrId> attrs;       ///< attributes of this variable the pattern reads
 };
 

@@ -151,11 +151,14 @@ void record_sensitivity(Rule& rule) {
     for (const PlanOp& op : *ops) {
       if (op.kind == PlanOp::Kind::lookup || op.kind == PlanOp::Kind::incoming || op.kind == PlanOp::Kind::check)
         note(rule.vars[op.owner].out_ports, op.port);
-      if (op.kind == PlanOp::Kind::incoming && rule.vars[op.owner].nac >= 0) note(rule.vars[op.target].in_ports, op.port);
+      if (op.kind == PlanOp::Kind::incoming && rule.vars[op.owner].nac >= 0)
+        note(rule.vars[op.target].negative_in_ports, op.port);
       if (op.kind == PlanOp::Kind::count) note(rule.vars[op.target].in_ports, op.port);
       if (op.expr) reads(*op.expr);
     }
   if (rule.order) reads(*rule.order);
+  for (Variable& v : rule.vars)
+    std::erase_if(v.negative_in_ports, [&](PortId p) { return std::count(v.in_ports.begin(), v.in_ports.end(), p) > 0; });
 }
 
 }  // namespace loom::engine

@@ -55,7 +55,7 @@ private:
 /// A condition `x.port[i] == y` or `== none` as a slot check, else a filter.
 PlanOp filter_op(const CExpr& e);
 
-/// Fills Variable::out_ports, in_ports and attrs: the changes that concern each variable.
+/// Fills Variable::out_ports, in_ports, negative_in_ports and attrs: the changes that concern each variable.
 void record_sensitivity(Rule& rule);
 /// Fills Rule::distinct.
 void record_distinctness(Rule& rule);
