@@ -80,6 +80,10 @@ TEST_CASE("the block-structured bosses close, valid, at two sizes") {
     CHECK(r.check->valid());  // criteria 1-7 against the surface: every scaled Jacobian > 0
     CHECK(r.check->quality.min_scaled_jacobian > 0.2);
     CHECK(r.attempts == 1);
+    // One placement, the woven mesh's, timed within the whole run.
+    CHECK(r.placements == 1);
+    CHECK(r.placement_seconds > 0);
+    CHECK(r.placement_seconds <= r.seconds);
     MESSAGE("bosses " << k << ": " << r.stc.hexes() << " woven hexes + " << r.boundary_layer.hexes_added
                       << " in the boundary layer, min SJ " << r.check->quality.min_scaled_jacobian);
   }

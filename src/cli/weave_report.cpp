@@ -122,6 +122,7 @@ nlohmann::json report_json(const std::string& input, const SurfaceFigures& surfa
   j["smoothing_iterations"] = r.smoothing.iterations;
   j["match_attempts"] = r.weave.counters.match_attempts;
   j["seconds"] = r.seconds;
+  j["placement"] = {{"meshes", r.placements}, {"seconds", r.placement_seconds}};
   if (!r.weave.closed) j["left"] = r.weave.left;
   if (!r.failure.empty()) j["failure"] = r.failure;
   if (!r.fill_failure.empty()) j["fill_failure"] = r.fill_failure;

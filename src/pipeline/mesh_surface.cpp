@@ -44,6 +44,23 @@ struct Candidate {
   bool valid() const { return check && check->combinatorial_valid(); }
 };
 
+/// Adds one placement and its seconds to the result's figures as it goes out
+/// of scope (whether the placement returned or threw).
+class PlacementTally {
+public:
+  explicit PlacementTally(MeshingResult& r) : r_(r) {}
+  PlacementTally(const PlacementTally&) = delete;
+  PlacementTally& operator=(const PlacementTally&) = delete;
+  ~PlacementTally() {
+    ++r_.placements;
+    r_.placement_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+private:
+  MeshingResult& r_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
 /// The boundary layer pillowed into the candidate and its nodes placed; false
 /// (and nothing changed) when the result fails criteria 1-6 or, with
 /// `only_if_better`, is not better than the candidate as it is.
@@ -68,7 +85,8 @@ bool place_with_boundary_layer(Candidate& c, const QuadSurface& surface, bool on
 /// below 0.2 the layer goes in first (placing the mesh without it would be
 /// wasted work); otherwise the mesh is placed, and a layer is tried when
 /// hexes <= 0 or < 0.2 are left, and kept when it does better.
-void place(Candidate& c, const QuadSurface& surface) {
+void place(Candidate& c, const QuadSurface& surface, MeshingResult& r) {
+  const PlacementTally tally(r);
   const auto locked = geometry::locked_corners(c.mesh, c.fixed);
   if (locked.below_0_2 > 0 && place_with_boundary_layer(c, surface, false)) return;
   c.smoothing = weave::smooth_interior(c.mesh, c.fixed);
@@ -132,7 +150,7 @@ void weave_once(MeshingResult& r, const QuadSurface& surface, std::vector<engine
     c.mesh = stc::to_hex_mesh(r.stc, &c.fixed);
     // to_hex_mesh keeps the STC's hex order.
     c.source = sources_of(r.stc, r.stc.graph().members(r.stc.ids().hex));
-    place(c, surface);
+    place(c, surface, r);
     adopt(r, std::move(c), "woven");
   } catch (const std::runtime_error& e) {
     r.failure = e.what();
@@ -160,12 +178,12 @@ private:
 };
 
 /// A candidate from a closed mesh: placed and checked.
-Candidate placed_candidate(ClosedMesh&& closed, const QuadSurface& surface) {
+Candidate placed_candidate(ClosedMesh&& closed, const QuadSurface& surface, MeshingResult& r) {
   Candidate c;
   c.mesh = std::move(closed.mesh);
   c.source = std::move(closed.source);
   c.fixed = std::move(closed.on_boundary);
-  place(c, surface);
+  place(c, surface, r);
   return c;
 }
 
@@ -181,7 +199,7 @@ void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMe
       r.closure_failure = "the search left cavities and the fill is off";
       return;
     }
-    Candidate c = placed_candidate(std::move(closed), surface);
+    Candidate c = placed_candidate(std::move(closed), surface, r);
     if (!c.valid()) {
       const auto* f = c.check->first_failure();
       r.closure_failure = f ? "criterion " + std::to_string(f->number) + " (" + f->name + ") fails: " + f->detail : "";
@@ -201,7 +219,7 @@ void adopt_if_better(MeshingResult& r, ClosedMesh&& closed, const QuadSurface& s
   const bool fewer = !r.combinatorially_valid() || hexes < hexes_before_layer(r);
   if (prefer == Prefer::fewest_hexes && !fewer) return;
   const ClosureReport report = closed.report;
-  Candidate c = placed_candidate(std::move(closed), surface);
+  Candidate c = placed_candidate(std::move(closed), surface, r);
   if (!c.valid()) return;
   if (prefer == Prefer::quality && r.combinatorially_valid() && !improves(c.smoothing, r.smoothing) &&
       (improves(r.smoothing, c.smoothing) || !fewer))
@@ -247,8 +265,11 @@ void fill_whole_surface(MeshingResult& r, const QuadSurface& surface, Resources&
     c.source.assign(c.mesh.hexes.size(), HexSource::filled);
     // Its caps are pillowed, so no hex has two faces on the boundary and a
     // boundary layer (place's second resort) could unlock nothing.
-    c.smoothing = weave::smooth_interior(c.mesh, c.fixed);
-    c.check = check_hex_mesh(c.mesh, &surface);
+    {
+      const PlacementTally tally(r);
+      c.smoothing = weave::smooth_interior(c.mesh, c.fixed);
+      c.check = check_hex_mesh(c.mesh, &surface);
+    }
     adopt(r, std::move(c), "filled");
   } catch (const InputError& e) {
     r.fill_failure = e.what();

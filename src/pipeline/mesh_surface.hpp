@@ -113,6 +113,11 @@ struct MeshingResult {
   /// line, the report and the cell field).
   geometry::InversionDiagnosis inversions;
   double seconds = 0;                    ///< of everything
+  /// Meshes placed (boundary layer, smoothing, untangling) and checked, every
+  /// candidate's whether kept or not, and their seconds: on small parts most
+  /// of `seconds` (bench/README.md has the profile).
+  std::size_t placements = 0;
+  double placement_seconds = 0;
   std::size_t attempts = 1;              ///< weaves run
   /// The attempt (1 for the first) whose woven hexes the mesh holds: the last
   /// when the weave made the mesh, the one that left the fewest whiskers when
