@@ -241,7 +241,9 @@ void Engine::undo(Graph::Checkpoint c) {
   g_.set_change_log(&log_);
   g_.rollback(c);
   g_.set_change_log(nullptr);
-  process_changes(g_.id_bound());
+  // No element is new after a rollback: a slot that went with a dropped
+  // element may have been what blocked a negative pattern.
+  process_changes(no_element);
 }
 
 void Engine::apply_rule(std::size_t r, Match& m, Application* applied) {

@@ -136,7 +136,8 @@ private:
     return (static_cast<std::size_t>(kind) * 3 + static_cast<std::size_t>(change)) * width_ + which;
   }
   /// Offers the anchors the logged changes concern; elements with ids from
-  /// `first_new` on were created by the step.
+  /// `first_new` on were created by the step (no_element: none were, as after
+  /// a rollback).
   void process_changes(Id first_new);
   /// Adds to anchors_ the anchors whose match may involve `element` as `var`.
   void trace(const Rule& rule, int var, Id element);

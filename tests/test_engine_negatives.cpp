@@ -87,3 +87,46 @@ TEST_CASE("a tag the step creates offers no blocked item again; a tag it deletes
   CHECK(g.get(x1, k.done) == 1);
   CHECK(g.get(x0, k.done) == 0);
 }
+
+TEST_CASE("a blocking tag a rollback takes away unblocks the item again") {
+  Tags k;
+  engine::Graph g(k.schema);
+  const Id x = g.add(k.item), s = g.add(k.tag);
+  g.link(s, k.of, 0, x);
+  g.set(s, k.fresh, 3);
+  // finish is blocked only by a tag marked 9; label adds one to s's item.
+  const char* rules = R"(
+rule finish {
+  match {
+    x: item where self.done == 0
+    not {
+      t: tag where self.fresh == 9
+      t.of == x
+    }
+  }
+  rewrite { x.done = 1 }
+}
+rule label {
+  match {
+    s: tag where self.fresh == 3
+    y: item
+    s.of == y
+  }
+  rewrite {
+    new t: tag
+    t.of = y
+    t.fresh = 9
+  }
+}
+)";
+  engine::Engine eng(g, engine::compile_rules(rules, "label.rule", *k.schema), {});
+  const auto finish = eng.select(engine::StrategyNode::Pick::priority, false, {"finish"});
+  const auto label = eng.select(engine::StrategyNode::Pick::priority, false, {"label"});
+  const auto before = eng.mark();
+  REQUIRE(eng.step(label));
+  CHECK_FALSE(eng.step(finish));  // x is blocked, and leaves finish's queue
+  eng.undo(before);               // the tag made by label goes: nothing is new after a rollback
+  CHECK(g.members(k.tag).size() == 1);
+  CHECK(eng.step(finish));
+  CHECK(g.get(x, k.done) == 1);
+}
