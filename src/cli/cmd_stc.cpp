@@ -37,6 +37,17 @@ void require_combinatorially_valid(const loom::HexMesh& mesh, const std::string&
                    fmt::format("run 'loom check {}' to see every criterion, and fix the mesh", file));
 }
 
+// One line per meridian: a basis of the cycles that bound inside the solid.
+std::string meridian_lines(const loom::SurfaceSummary& checked) {
+  if (checked.genus == 0) return "";
+  if (!checked.meridians_known)
+    return "meridians: not determined (the linking numbers of the surface's cycles could not be trusted; does the "
+           "surface meet itself?)\n";
+  std::string lines;
+  for (const auto& cycle : checked.meridians) lines += fmt::format("meridian {}\n", loom::describe_cycle(cycle));
+  return lines;
+}
+
 int run(const Options& o) {
   auto mesh = loom::read_surface_or_hex_mesh(o.mesh);
   bool surface = std::holds_alternative<loom::QuadSurface>(mesh);
@@ -57,11 +68,19 @@ int run(const Options& o) {
   if (o.json) {
     auto j = loom::stc::to_json(summary);
     j["input"] = surface ? "surface" : "hex mesh";
-    if (surface) j["genus"] = checked.genus;
+    if (surface) {
+      j["genus"] = checked.genus;
+      if (checked.meridians_known) {
+        j["meridians"] = nlohmann::json::array();
+        for (const auto& cycle : checked.meridians) j["meridians"].push_back({{"length", cycle.size()}, {"nodes", cycle}});
+      } else {
+        j["meridians"] = nullptr;
+      }
+    }
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << loom::stc::to_text(summary, surface);
-    if (surface) std::cout << fmt::format("genus {}\n", checked.genus);
+    if (surface) std::cout << fmt::format("genus {}\n", checked.genus) << meridian_lines(checked);
     if (files) std::cout << fmt::format("wrote {} DOT/SVG files to {}\n", files, o.dot_dir);
   }
   return 0;

@@ -56,6 +56,12 @@ QuadSurface odd7();
 /// Torus with n quads around the axis (major radius 2) and m around the tube
 /// (minor radius 1): n*m quads, genus 1. Needs n, m >= 3 and n*m even.
 QuadSurface torus(int n, int m);
+/// Tori in a row along x, each with n quads around its axis (major radius 2)
+/// and tubes[t] around its tube (minor radius 1), 7 apart, each joined to the
+/// next by a straight tube of 4 quads: a surface of genus tubes.size(), with
+/// n sum(tubes) + 2 (tubes.size() - 1) quads. Torus t's meridian has tubes[t]
+/// edges. Needs n >= 4 and even for two tori or more, every tube >= 3.
+QuadSurface torus_chain(int n, const std::vector<int>& tubes);
 /// A random quadrangulation of the sphere with exactly `faces` quads (even,
 /// 6..kMaxRandquadFaces), simple, every node of degree >= 3, nodes on the unit
 /// sphere. Grown from the cube by hex flips (k = 1, 2) mixed with k = 3 hex

@@ -272,6 +272,25 @@ void check_quads_meet_properly(const QuadSurface& s, const std::string& where) {
              "refine the surface there (splitting every quad into four parts them)");
 }
 
+// Erickson's condition beyond the quad count: every cycle bounding inside the
+// solid is even. `outward` says which way the quads face.
+void check_meridians_even(const QuadSurface& s, bool outward, const std::string& where, SurfaceSummary& summary) {
+  QuadSurface facing_out;
+  if (!outward) {
+    facing_out = s;
+    for (Quad& q : facing_out.quads) std::swap(q[1], q[3]);
+  }
+  const MeridianReport report = find_meridians(outward ? s : facing_out);
+  summary.meridians = report.meridians;
+  summary.meridians_known = report.determined;
+  if (!report.odd) return;
+  fail_input(where,
+             fmt::format("no hex mesh can have this boundary: the cycle of nodes {} bounds a surface inside the "
+                         "solid and is odd, but every such cycle on a hex mesh's boundary is even",
+                         describe_cycle(*report.odd)),
+             "make the number of edges round that handle even (splitting every quad into four doubles every cycle)");
+}
+
 // Drops nodes no quad uses; returns how many were dropped.
 std::size_t drop_unused_nodes(QuadSurface& s) {
   std::vector<std::uint32_t> kept = used_nodes(s);
@@ -322,9 +341,13 @@ SurfaceSummary validate_surface(QuadSurface& surface, const std::string& where, 
   check_single_component(surface, halves, where);
   check_even_quad_count(surface, where);
   check_quads_meet_properly(surface, where);
+  const bool outward = signed_volume_times_6(surface) >= 0;
+  // A surface of genus 0 has no cycle bounding inside but those bounding on it.
+  if (summary.edges != used_nodes(surface).size() + surface.quads.size() - 2)
+    check_meridians_even(surface, outward, where, summary);
 
   summary.unused_nodes = drop_unused_nodes(surface) - summary.welded_nodes;
-  if (signed_volume_times_6(surface) < 0) {
+  if (!outward) {
     for (Quad& q : surface.quads) std::swap(q[1], q[3]);
     summary.flipped = true;
   }

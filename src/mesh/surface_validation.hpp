@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "src/mesh/meridians.hpp"
 #include "src/mesh/quad_surface.hpp"
 
 namespace loom {
@@ -23,6 +24,10 @@ struct SurfaceSummary {
   std::size_t welded_nodes = 0;  ///< nodes removed by welding
   std::size_t unused_nodes = 0;  ///< nodes removed because no quad used them
   bool flipped = false;          ///< the surface faced inward and was flipped
+  /// A basis of the cycles that bound inside the solid (meridians.hpp), empty
+  /// on a sphere; not known if the linking numbers could not be trusted.
+  std::vector<NodeCycle> meridians;
+  bool meridians_known = true;
 };
 
 /// Validates (and, if asked, welds) `surface` in place. Throws InputError naming
@@ -32,7 +37,9 @@ struct SurfaceSummary {
 /// than two quads); open boundary (count of boundary edges); non-manifold
 /// vertices (a vertex whose quads form several fans); inconsistent orientation;
 /// several components; an odd number of quads (no hex mesh can exist); two
-/// quads meeting improperly (see quads_meeting_improperly).
+/// quads meeting improperly (see quads_meeting_improperly); a cycle with an
+/// odd number of edges that bounds inside the solid (no hex mesh can exist,
+/// meridians.hpp).
 /// Unused nodes are dropped (counted in the summary). Surfaces oriented
 /// inward are flipped to face outward.
 SurfaceSummary validate_surface(QuadSurface& surface, const std::string& where,
