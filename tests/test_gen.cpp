@@ -142,6 +142,16 @@ TEST_CASE("torus: n x m quads, genus 1") {
   CHECK(signed_volume(s) < 2 * std::numbers::pi * std::numbers::pi * 2);
 }
 
+TEST_CASE("plate: N holes give genus N, and its volume is the cubes left") {
+  for (auto [n, k] : {std::pair{1, 1}, {3, 1}, {2, 2}}) {
+    CAPTURE(n);
+    CAPTURE(k);
+    const QuadSurface s = gen::plate_with_holes(n, k);
+    CHECK(check_surface(s) == n);
+    CHECK(signed_volume(s) == doctest::Approx(3.0 * (2 * n + 1) - n));
+  }
+}
+
 TEST_CASE("listed surfaces of literature.md §5") {
   SUBCASE("Schneiders' pyramid: V=18, Q=16, valences 3 x8 and 4 x10") {
     const QuadSurface s = gen::schneiders();

@@ -188,13 +188,3 @@ TEST_CASE("the closure keeps the woven hexes of the attempt that left the fewest
   CHECK(r.woven_attempt == fewest);
   CHECK(std::count(r.source.begin(), r.source.end(), closure::HexSource::woven) > 0);
 }
-
-TEST_CASE("a surface of genus 1 the weave leaves open is not given to the closure, which needs a sphere") {
-  pipeline::MeshingOptions options = pipeline::default_meshing_options();
-  options.attempts = 2;
-  const auto r = pipeline::mesh_surface(gen::torus(4, 6), shipped_rules(), options);
-  CHECK(!r.weave.closed);
-  CHECK(!r.combinatorially_valid());
-  CHECK(r.closure_failure.find("genus 1") != std::string::npos);
-  CHECK(r.made_by.empty());
-}

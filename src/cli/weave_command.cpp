@@ -217,12 +217,16 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
   auto count = [&](loom::closure::HexSource s) { return std::count(result.source.begin(), result.source.end(), s); };
   std::string counts;
   for (const auto& [rule, n] : result.weave.applications) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", rule, n);
-  std::string attempt = result.attempts == 1 ? std::string()
-                        : fmt::format(" (attempt {}: strategy {} seed {})", result.attempts,
-                                      result.strategy.name(), result.strategy.seed);
+  const std::size_t attempt_shown = result.attempts - result.attempts_before_cut;  // the ball's, when cut
+  std::string attempt = attempt_shown == 1 ? std::string()
+                        : fmt::format(" (attempt {}: strategy {} seed {})", attempt_shown, result.strategy.name(),
+                                      result.strategy.seed);
   std::string layer = result.boundary_layer.hexes_added == 0
                           ? std::string()
                           : fmt::format(", boundary layer pillowed (+{} hexes)", result.boundary_layer.hexes_added);
+  if (result.cut_disks > 0)
+    layer = fmt::format(", the solid cut into a ball along {} meridian disk{} and glued back{}", result.cut_disks,
+                        result.cut_disks == 1 ? "" : "s", layer);
   std::string quality = fmt::format("min scaled Jacobian {:.3f}, mean {:.3f}; wrote {}", q.min_scaled_jacobian,
                                     q.mean_scaled_jacobian, o.output);
   using loom::closure::HexSource;

@@ -65,6 +65,7 @@ nlohmann::json report_json(const std::string& input, const SurfaceFigures& surfa
   j["whiskers_left"] = r.weave.whiskers_left;
   j["filled"] = r.filled();
   j["made_by"] = r.made_by.empty() ? "nothing" : r.made_by;
+  j["cut_disks"] = r.cut_disks;
   j["prefer"] = r.prefer == pipeline::Prefer::quality ? "quality" : "fewest-hexes";
   j["woven_hexes"] = r.stc.hexes();
   j["hexes"] = r.mesh ? r.mesh->hexes.size() : 0;

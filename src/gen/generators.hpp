@@ -62,6 +62,10 @@ QuadSurface torus(int n, int m);
 /// n sum(tubes) + 2 (tubes.size() - 1) quads. Torus t's meridian has tubes[t]
 /// edges. Needs n >= 4 and even for two tori or more, every tube >= 3.
 QuadSurface torus_chain(int n, const std::vector<int>& tubes);
+/// A plate of (2N + 1) x 3 x 1 unit cubes with N square holes through it (hole
+/// h is [2h+1, 2h+2] x [1, 2]), each cube cut into K^3: genus N, every meridian
+/// 4K edges, and its hex mesh is its grid. Needs N, K >= 1.
+QuadSurface plate_with_holes(int holes, int k);
 /// A random quadrangulation of the sphere with exactly `faces` quads (even,
 /// 6..kMaxRandquadFaces), simple, every node of degree >= 3, nodes on the unit
 /// sphere. Grown from the cube by hex flips (k = 1, 2) mixed with k = 3 hex

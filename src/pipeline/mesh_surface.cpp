@@ -8,6 +8,7 @@
 
 #include "src/fill/fill.hpp"
 #include "src/geometry/boundary_layer.hpp"
+#include "src/pipeline/handle_cuts.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
 #include "src/util/error.hpp"
@@ -276,6 +277,53 @@ void fill_whole_surface(MeshingResult& r, const QuadSurface& surface, Resources&
   }
 }
 
+/// A solid with handles, cut into a ball (handle_cuts.hpp), the ball meshed
+/// by the whole pipeline, and its mesh glued and placed again, the surface's
+/// nodes fixed and the disks' free. The result reports the ball's weave.
+void mesh_through_cuts(MeshingResult& r, const QuadSurface& surface, std::vector<engine::Rule> rules,
+                       const MeshingOptions& options) {
+  if (options.on_stage) options.on_stage("cutting along meridian disks");
+  std::string why_not;
+  const auto cut = cut_into_ball(surface, why_not);
+  if (!cut) {
+    r.closure_failure = "the solid could not be cut into a ball: " + why_not;
+    return;
+  }
+  MeshingResult ball = mesh_surface(cut->ball, std::move(rules), options);
+  r.placements += ball.placements;
+  r.placement_seconds += ball.placement_seconds;
+  const std::string disks = fmt::format("{} disk{}", cut->disks, cut->disks == 1 ? "" : "s");
+  if (!ball.combinatorially_valid()) {
+    const std::string& why = !ball.closure_failure.empty() ? ball.closure_failure
+                             : !ball.failure.empty()       ? ball.failure
+                                                           : ball.fill_failure;
+    r.closure_failure = fmt::format("cut along {} into a ball, which got no mesh: {}", disks, why);
+    return;
+  }
+  Candidate c;
+  c.mesh = glue_disks(*ball.mesh, *cut, surface, c.fixed);
+  c.source = ball.source;
+  place(c, surface, r);
+  c.layer.hexes_added += ball.boundary_layer.hexes_added;
+  c.layer.nodes_added += ball.boundary_layer.nodes_added;
+  if (!c.valid()) {
+    const auto* f = c.check->first_failure();
+    r.closure_failure = fmt::format("cut along {} into a ball and meshed it, but glued back criterion {} ({}) fails: {}",
+                                    disks, f->number, f->name, f->detail);
+    return;
+  }
+  r.attempts_before_cut = r.attempts;
+  r.stc = std::move(ball.stc);
+  r.weave = std::move(ball.weave);
+  r.closure = ball.closure;
+  r.strategy = ball.strategy;
+  r.attempts += ball.attempts;
+  r.wide_search_stopped = ball.wide_search_stopped;
+  adopt(r, std::move(c), ball.made_by);
+  r.cut_disks = cut->disks;
+  r.woven_attempt = ball.woven_attempt == 0 ? 0 : r.attempts_before_cut + ball.woven_attempt;
+}
+
 }  // namespace
 
 /// A surface of at most 20 quads still over 72 hexes after the direct search
@@ -311,6 +359,17 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
   std::optional<HexMesh> best_woven;  // of the attempt that left the fewest whiskers
   std::vector<HexSource> best_woven_source;
   std::size_t best_left = SIZE_MAX, best_attempt = 0;
+  // Cavities, the search and the fill are built for balls: a solid with
+  // handles that the weave does not mesh is cut into one. Its own weave gets
+  // one attempt, the ball all of them: 16 attempts closed no torus N x M of
+  // N = 3..24, M = 4..16, nor the 5 x 3 plate with two holes.
+  std::vector<bool> used(surface.points.size(), false);
+  for (const Quad& q : surface.quads)
+    for (std::uint32_t v : q) used[v] = true;
+  // V - E + F with E = 2F on a closed quad surface.
+  const long long euler = std::count(used.begin(), used.end(), true) - static_cast<long long>(surface.quads.size());
+  const bool cut_if_open = options.closure != Closure::none && euler != 2;
+  const std::size_t attempts = cut_if_open ? 1 : options.attempts;
   for (r.attempts = 1;; ++r.attempts) {
     r.strategy = attempt.strategy;
     weave_once(r, surface, rules, attempt, options.on_stage);
@@ -322,21 +381,13 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
       best_woven = stc::woven_over_surface(r.stc, surface.points.size(), &hexes);
       best_woven_source = sources_of(r.stc, hexes);
     }
-    if (r.attempts >= options.attempts) break;
+    if (r.attempts >= attempts) break;
     attempt.strategy = options.weave.strategy.with_random_picks();
     attempt.strategy.seed = first_seed + r.attempts;
     if (options.before_attempt) options.before_attempt(r.attempts + 1, attempt.strategy, r.weave);
   }
-  // Cavities, the search and the fill are built for balls: a surface of
-  // higher genus gets the weave alone, and is told why.
-  std::vector<bool> used(surface.points.size(), false);
-  for (const Quad& q : surface.quads)
-    for (std::uint32_t v : q) used[v] = true;
-  // V - E + F with E = 2F on a closed quad surface.
-  const long long euler = std::count(used.begin(), used.end(), true) - static_cast<long long>(surface.quads.size());
-  if (options.closure != Closure::none && euler != 2 && !r.combinatorially_valid())
-    r.closure_failure = fmt::format("it needs a sphere (genus 0), and the surface has genus {}, so only the weave can "
-                                    "mesh it; try more --attempts or another --strategy", (2 - euler) / 2);
+  if (cut_if_open && !r.combinatorially_valid())
+    mesh_through_cuts(r, surface, rules, options);
   else if (options.closure != Closure::none) {
     Resources res(options);
     if (!r.combinatorially_valid()) close_cavities_of(r, surface, *best_woven, best_woven_source, res, options);
@@ -381,7 +432,8 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
     }
   }
   const bool holds_woven = std::count(r.source.begin(), r.source.end(), HexSource::woven) > 0;
-  r.woven_attempt = !holds_woven ? 0 : r.made_by == "woven" ? r.attempts : r.made_by == "closed" ? best_attempt : 0;
+  if (r.cut_disks == 0)
+    r.woven_attempt = !holds_woven ? 0 : r.made_by == "woven" ? r.attempts : r.made_by == "closed" ? best_attempt : 0;
   if (r.mesh) r.inversions = geometry::diagnose_inversions(*r.mesh);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

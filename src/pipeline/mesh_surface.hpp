@@ -13,6 +13,9 @@
 //      whose cavities needed the fill, is also closed by search from the
 //      surface itself (no woven hex), and the better mesh kept (Prefer);
 //   3. whole-surface fill (Closure::full), the last resort.
+// A solid with handles (genus > 0) gets one weave (all of them under
+// Closure::none); when that does not mesh it, it is cut into a ball along
+// disks spanning its meridians, and the ball goes through 1-3.
 // Then node placement and the validity check.
 #include <cstddef>
 #include <filesystem>
@@ -118,7 +121,13 @@ struct MeshingResult {
   /// of `seconds` (bench/README.md has the profile).
   std::size_t placements = 0;
   double placement_seconds = 0;
-  std::size_t attempts = 1;              ///< weaves run
+  /// Disks the solid was cut along into a ball (0 for a ball, or a solid with
+  /// handles the weave meshed whole); the mesh then holds the ball's, glued,
+  /// and `stc`, `weave`, `closure` and `strategy` are the ball's.
+  int cut_disks = 0;
+  /// Weaves of the solid itself before it was cut (the first of `attempts`).
+  std::size_t attempts_before_cut = 0;
+  std::size_t attempts = 1;              ///< weaves run (the solid's, then the ball's)
   /// The attempt (1 for the first) whose woven hexes the mesh holds: the last
   /// when the weave made the mesh, the one that left the fewest whiskers when
   /// the closure did; 0 when no woven hex is in it (the closure peeled them
