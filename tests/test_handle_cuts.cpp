@@ -83,15 +83,17 @@ TEST_CASE("a cut refuses a meridian it cannot span: odd, short or not simple") {
   CHECK(why_not.find("twice") != std::string::npos);
 }
 
-TEST_CASE("tori with an even meridian mesh through the cut, valid by criteria 1-6; 4 x M is the ring of N hexes") {
-  for (int n : {3, 4, 7})
+TEST_CASE("tori with an even meridian mesh through the cut, valid by criteria 1-6; N x 4 is the ring of N hexes") {
+  for (int n : {3, 4, 7, 20})
     for (int m : {4, 6, 10}) {
       CAPTURE(n);
       CAPTURE(m);
       const auto r = mesh(gen::torus(n, m));
       REQUIRE(r.combinatorially_valid());
       CHECK(r.cut_disks == 1);
+      // A thin ring too: its cut's two sides must not be pushed through its hexes.
       if (m == 4) CHECK(r.mesh->hexes.size() == static_cast<std::size_t>(n));
+      if (m == 4 && n >= 4) CHECK(r.check->quality.min_scaled_jacobian > 0.7);
       CHECK(r.check->boundary_genus == 1);
     }
 }

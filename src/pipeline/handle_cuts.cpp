@@ -147,12 +147,22 @@ std::optional<CutSurface> cut_along_disk(const QuadSurface& surface, const NodeC
   for (std::uint32_t v = 0; v < surface.points.size(); ++v) cut.glued.push_back(v);
   const auto n = static_cast<std::uint32_t>(surface.points.size());
   std::vector<std::uint32_t> copy(c.size());
+  std::vector<std::vector<std::uint32_t>> quads_at(surface.points.size());
+  for (std::uint32_t q = 0; q < surface.quads.size(); ++q)
+    for (std::uint32_t v : surface.quads[q]) quads_at[v].push_back(q);
+  // The push is a quarter of the shortest edge leaving C: less would do, but
+  // more could fold the quads beside C (a thin ring's inner side).
   Vec3 area{0, 0, 0}, left_side{0, 0, 0};
   double shortest = HUGE_VAL;
   for (std::size_t k = 0; k < c.size(); ++k) {
-    const Vec3 &p = surface.points[c[k]], &q = surface.points[c[(k + 1) % c.size()]];
-    area = area + 0.5 * cross(p, q);
-    shortest = std::min(shortest, norm(q - p));
+    const std::uint32_t next = c[(k + 1) % c.size()], before = c[(k + c.size() - 1) % c.size()];
+    area = area + 0.5 * cross(surface.points[c[k]], surface.points[next]);
+    for (std::uint32_t q : quads_at[c[k]]) {
+      const Quad& quad = surface.quads[q];
+      const int at = corner_of(quad, c[k]);
+      for (std::uint32_t w : {quad[(at + 1) % 4], quad[(at + 3) % 4]})
+        if (w != next && w != before) shortest = std::min(shortest, norm(surface.points[w] - surface.points[c[k]]));
+    }
   }
   for (std::size_t k = 0; k < c.size(); ++k) {
     const auto fan = left_fan(surface, quad_of, c, k);
@@ -160,16 +170,13 @@ std::optional<CutSurface> cut_along_disk(const QuadSurface& surface, const NodeC
       why_not = fmt::format("the quads round node {} of a meridian do not form one fan", c[k]);
       return std::nullopt;
     }
-    std::vector<bool> left_here(surface.quads.size(), false);
-    for (std::uint32_t q : *fan) {
-      left_here[q] = true;
+    for (std::uint32_t q : *fan)
       for (std::uint32_t v : surface.quads[q]) left_side = left_side + (surface.points[v] - surface.points[c[k]]);
-    }
     copy[k] = static_cast<std::uint32_t>(cut.ball.points.size());
     cut.ball.points.push_back(surface.points[c[k]]);
     cut.glued.push_back(c[k]);
-    for (std::uint32_t q = 0; q < surface.quads.size(); ++q)
-      if (!left_here[q])
+    for (std::uint32_t q : quads_at[c[k]])
+      if (std::find(fan->begin(), fan->end(), q) == fan->end())
         for (std::uint32_t& v : cut.ball.quads[q])
           if (v == c[k]) v = copy[k];
   }

@@ -6,9 +6,10 @@
 // Cutting the surface along a meridian C splits each node of C in two: the
 // quads on C's left keep the node, those on its right get a copy. Each side's
 // hole is closed by a copy of the disk, an a x b grid with 2(a + b) = |C|
-// whose inner nodes sit on the Coons patch of C. The two copies are pushed a
-// quarter of C's shortest edge apart along the disk's normal, so that the
-// ball's surface does not touch itself; gluing puts them back on the patch.
+// whose inner nodes sit on the Coons patch of C. The two sides are pushed
+// apart along the disk's normal, each by a quarter of the shortest edge
+// leaving C, so that the ball's surface does not touch itself; gluing puts
+// them back.
 #include <cstdint>
 #include <optional>
 #include <string>
