@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 
 #include "src/check/hex_topology.hpp"
+#include "src/closure/cavities.hpp"
+#include "src/quadmap/quad_map.hpp"
 #include "src/mesh/surface_validation.hpp"
 #include "src/util/error.hpp"
 
@@ -150,13 +152,15 @@ std::optional<CutSurface> cut_along_disk(const QuadSurface& surface, const NodeC
   std::vector<std::vector<std::uint32_t>> quads_at(surface.points.size());
   for (std::uint32_t q = 0; q < surface.quads.size(); ++q)
     for (std::uint32_t v : surface.quads[q]) quads_at[v].push_back(q);
-  // The push is a quarter of the shortest edge leaving C: less would do, but
-  // more could fold the quads beside C (a thin ring's inner side).
+  // The push is a quarter of the shortest edge on or leaving C: less would
+  // do, but more could fold the quads beside C (a thin ring's inner side) or
+  // the disk itself (a thick ring's).
   Vec3 area{0, 0, 0}, left_side{0, 0, 0};
   double shortest = HUGE_VAL;
   for (std::size_t k = 0; k < c.size(); ++k) {
     const std::uint32_t next = c[(k + 1) % c.size()], before = c[(k + c.size() - 1) % c.size()];
     area = area + 0.5 * cross(surface.points[c[k]], surface.points[next]);
+    shortest = std::min(shortest, norm(surface.points[next] - surface.points[c[k]]));
     for (std::uint32_t q : quads_at[c[k]]) {
       const Quad& quad = surface.quads[q];
       const int at = corner_of(quad, c[k]);
@@ -240,6 +244,14 @@ std::optional<CutSurface> cut_into_ball(const QuadSurface& surface, std::string&
     }
     if (report.flipped || checked.points.size() != whole.ball.points.size()) {
       why_not = "a cut turned the surface inside out";
+      return std::nullopt;
+    }
+    // The cavity closure needs more than validation does: three quads or more
+    // at every node, no two quads on one diagonal.
+    if (auto bad = closure::improper_vertices(quadmap::from_surface(whole.ball)); !bad.empty()) {
+      const auto degree = quadmap::degrees(quadmap::from_surface(whole.ball));
+      why_not = fmt::format("after {} cut{} node {} ({} quads) is not proper", whole.disks, whole.disks == 1 ? "" : "s",
+                            bad.front(), degree[bad.front()]);
       return std::nullopt;
     }
     if (report.genus == 0) return whole;

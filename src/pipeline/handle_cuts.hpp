@@ -7,8 +7,8 @@
 // quads on C's left keep the node, those on its right get a copy. Each side's
 // hole is closed by a copy of the disk, an a x b grid with 2(a + b) = |C|
 // whose inner nodes sit on the Coons patch of C. The two sides are pushed
-// apart along the disk's normal, each by a quarter of the shortest edge
-// leaving C, so that the ball's surface does not touch itself; gluing puts
+// apart along the disk's normal, each by a quarter of the shortest edge on
+// or leaving C, so that the ball's surface does not touch itself; gluing puts
 // them back.
 #include <cstdint>
 #include <optional>
