@@ -140,3 +140,19 @@ TEST_CASE("loom weave says when it pillowed the boundary layer, and the report c
   CHECK(j["irregular_interior_edges"] == 80);
   CHECK(loom::test::run_cli("check " + (dir / "c.vtk").string() + " --boundary " + (dir / "c.obj").string()).status == 0);
 }
+
+TEST_CASE("a boundary layer taken back leaves the hexes as they were; anything else is refused") {
+  const HexMesh grid = gen::hexgrid(3, 2, 2);
+  HexMesh pillowed = grid;
+  std::vector<bool> fixed(grid.points.size(), true);
+  const auto layer = geometry::pillow_boundary_layer(pillowed, fixed);
+  REQUIRE(layer.hexes_added == 32);
+  HexMesh taken_back = pillowed;
+  REQUIRE(geometry::remove_boundary_layer(taken_back, layer.hexes_added));
+  CHECK(taken_back.hexes == grid.hexes);
+  // The last hexes of a grid are no layer: their "copies" are ordinary nodes.
+  HexMesh plain = grid;
+  CHECK(!geometry::remove_boundary_layer(plain, 4));
+  CHECK(plain.hexes == grid.hexes);
+  CHECK(!geometry::remove_boundary_layer(plain, grid.hexes.size() + 1));
+}

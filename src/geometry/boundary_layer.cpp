@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 #include <span>
 #include <stdexcept>
 
@@ -61,6 +62,27 @@ BoundaryLayerReport pillow_region(HexMesh& mesh, std::size_t first, std::size_t 
     mesh.hexes.push_back({q[0], q[1], q[2], q[3], copy[q[0]], copy[q[1]], copy[q[2]], copy[q[3]]});
   report.hexes_added = boundary.size();
   return report;
+}
+
+bool remove_boundary_layer(HexMesh& mesh, std::size_t hexes) {
+  if (hexes > mesh.hexes.size()) return false;
+  const std::size_t first = mesh.hexes.size() - hexes;
+  std::map<std::uint32_t, std::uint32_t> original_of;  // copy -> the boundary node it copies
+  std::set<std::uint32_t> boundary;
+  for (std::size_t h = first; h < mesh.hexes.size(); ++h)
+    for (int k = 0; k < 4; ++k) {
+      const std::uint32_t a = mesh.hexes[h][k], copy = mesh.hexes[h][k + 4];
+      if (original_of.emplace(copy, a).first->second != a) return false;
+      boundary.insert(a);
+    }
+  std::vector<Hex> kept(mesh.hexes.begin(), mesh.hexes.begin() + static_cast<std::ptrdiff_t>(first));
+  for (Hex& h : kept)
+    for (std::uint32_t& v : h) {
+      if (boundary.contains(v)) return false;  // a layer's boundary node in a hex of the rest
+      if (auto it = original_of.find(v); it != original_of.end()) v = it->second;
+    }
+  mesh.hexes = std::move(kept);
+  return true;
 }
 
 }  // namespace loom::geometry

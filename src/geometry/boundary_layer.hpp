@@ -33,4 +33,10 @@ BoundaryLayerReport pillow_boundary_layer(HexMesh& mesh, std::vector<bool>& fixe
 /// the boundary, whatever the region's hexes did there before.
 BoundaryLayerReport pillow_region(HexMesh& mesh, std::size_t first, std::size_t last, std::vector<bool>& fixed);
 
+/// Takes back a layer that pillow_boundary_layer put in as the last `hexes`
+/// hexes: those are removed and every copy a' becomes a again in the hexes
+/// left (the copies stay as unused nodes). False, and nothing changed, when
+/// the last `hexes` hexes are not such a layer.
+bool remove_boundary_layer(HexMesh& mesh, std::size_t hexes);
+
 }  // namespace loom::geometry
