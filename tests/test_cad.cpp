@@ -72,9 +72,11 @@ TEST_CASE("cad part: the other bundled parts become even closed quad surfaces of
     int genus;
   };
   // A ball; a flange (a hub on a disc, a bore and four bolt holes); a filleted
-  // tee of two bars; an angle of two thin walls, filleted, a hole in each.
+  // tee of two bars; an angle of two thin walls, filleted, a hole in each; a
+  // washer; a link with a hole at each end and a slot; a grate of 3 x 2 holes.
   for (const Part& p : {Part{"sphere.geo", 1, 0}, Part{"flange.geo", 10, 5}, Part{"tee.geo", 7, 0},
-                        Part{"wall.geo", 11, 2}}) {
+                        Part{"wall.geo", 11, 2}, Part{"washer.geo", 4, 1}, Part{"link.geo", 12, 3},
+                        Part{"grate.geo", 30, 6}}) {
     CAPTURE(p.file);
     const auto part = cad::quad_surface_of_part(examples / p.file, std::nullopt);
     CHECK(part.faces == p.faces);

@@ -320,10 +320,16 @@ void mesh_through_cuts(MeshingResult& r, const QuadSurface& surface, std::vector
     c.layer.nodes_added += kept_layer.nodes_added;
     return c;
   };
-  Candidate c = glued(true);
-  if (ball.boundary_layer.hexes_added > 0) {
-    Candidate with_sheets = glued(false);
-    if (with_sheets.valid() && (!c.valid() || improves(with_sheets.smoothing, c.smoothing))) c = std::move(with_sheets);
+  Candidate c;
+  try {
+    c = glued(true);
+    if (ball.boundary_layer.hexes_added > 0) {
+      Candidate with_sheets = glued(false);
+      if (with_sheets.valid() && (!c.valid() || improves(with_sheets.smoothing, c.smoothing))) c = std::move(with_sheets);
+    }
+  } catch (const std::runtime_error& e) {
+    r.closure_failure = fmt::format("cut along {} into a ball and meshed it, but could not glue it back: {}", disks, e.what());
+    return;
   }
   if (!c.valid()) {
     const auto* f = c.check->first_failure();
