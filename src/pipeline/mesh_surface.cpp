@@ -8,7 +8,8 @@
 
 #include "src/fill/fill.hpp"
 #include "src/geometry/boundary_layer.hpp"
-#include "src/pipeline/handle_cuts.hpp"
+#include "src/pipeline/candidate.hpp"
+#include "src/pipeline/mesh_handles.hpp"
 #include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
 #include "src/util/error.hpp"
@@ -28,74 +29,6 @@ constexpr std::size_t kBesideValidExpansions = 500;
 constexpr std::size_t kPublishedSmallBound = 72;
 constexpr std::size_t kPublishedSmallQuads = 20;
 
-/// Fewer hexes <= 0, or as many and fewer < 0.2.
-bool improves(const weave::SmoothingReport& a, const weave::SmoothingReport& b) {
-  if (a.below_zero_after != b.below_zero_after) return a.below_zero_after < b.below_zero_after;
-  return a.below_0_2_after < b.below_0_2_after;
-}
-
-/// A mesh on its way out: its hexes' sources and the nodes placement must not move.
-struct Candidate {
-  HexMesh mesh;
-  std::vector<HexSource> source;
-  std::vector<bool> fixed;
-  weave::SmoothingReport smoothing;
-  std::optional<ValidityReport> check;
-  geometry::BoundaryLayerReport layer;
-  bool valid() const { return check && check->combinatorial_valid(); }
-};
-
-/// Adds one placement and its seconds to the result's figures as it goes out
-/// of scope (whether the placement returned or threw).
-class PlacementTally {
-public:
-  explicit PlacementTally(MeshingResult& r) : r_(r) {}
-  PlacementTally(const PlacementTally&) = delete;
-  PlacementTally& operator=(const PlacementTally&) = delete;
-  ~PlacementTally() {
-    ++r_.placements;
-    r_.placement_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-
-private:
-  MeshingResult& r_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
-/// The boundary layer pillowed into the candidate and its nodes placed; false
-/// (and nothing changed) when the result fails criteria 1-6 or, with
-/// `only_if_better`, is not better than the candidate as it is.
-bool place_with_boundary_layer(Candidate& c, const QuadSurface& surface, bool only_if_better) {
-  HexMesh pillowed = c.mesh;
-  std::vector<bool> fixed = c.fixed;
-  const auto layer = geometry::pillow_boundary_layer(pillowed, fixed);
-  auto placed = weave::smooth_interior(pillowed, fixed);
-  auto check = check_hex_mesh(pillowed, &surface);
-  if (!check.combinatorial_valid() || (only_if_better && !improves(placed, c.smoothing))) return false;
-  c.source.resize(pillowed.hexes.size(), HexSource::pillow);
-  c.mesh = std::move(pillowed);
-  c.smoothing = placed;
-  c.check = std::move(check);
-  c.layer = layer;
-  return true;
-}
-
-/// Node placement, and the boundary layer when it helps. A hex with two faces
-/// on one flat part of the boundary has corners whose four nodes are all on
-/// the boundary: locked, whatever placement does. When some locked corner is
-/// below 0.2 the layer goes in first (placing the mesh without it would be
-/// wasted work); otherwise the mesh is placed, and a layer is tried when
-/// hexes <= 0 or < 0.2 are left, and kept when it does better.
-void place(Candidate& c, const QuadSurface& surface, MeshingResult& r) {
-  const PlacementTally tally(r);
-  const auto locked = geometry::locked_corners(c.mesh, c.fixed);
-  if (locked.below_0_2 > 0 && place_with_boundary_layer(c, surface, false)) return;
-  c.smoothing = weave::smooth_interior(c.mesh, c.fixed);
-  c.check = check_hex_mesh(c.mesh, &surface);
-  if (locked.below_0_2 == 0 && c.valid() && (c.smoothing.below_zero_after > 0 || c.smoothing.below_0_2_after > 0))
-    place_with_boundary_layer(c, surface, true);
-}
-
 /// Hexes of the result before its boundary layer, which placement adds to
 /// some meshes and not others: meshes are compared by this count.
 std::size_t hexes_before_layer(const MeshingResult& r) { return r.mesh->hexes.size() - r.boundary_layer.hexes_added; }
@@ -110,16 +43,6 @@ bool within_published_bound(const MeshingResult& r) {
 bool wants_smaller(const MeshingResult& r, Prefer prefer) {
   if (within_published_bound(r)) return false;
   return prefer == Prefer::fewest_hexes || !r.combinatorially_valid() || r.smoothing.below_zero_after > 0;
-}
-
-/// Takes `c` as the result.
-void adopt(MeshingResult& r, Candidate&& c, std::string made_by) {
-  r.mesh = std::move(c.mesh);
-  r.source = std::move(c.source);
-  r.check = std::move(c.check);
-  r.smoothing = c.smoothing;
-  r.boundary_layer = c.layer;
-  r.made_by = std::move(made_by);
 }
 
 /// Where each STC hex came from: woven, or put in whole by a template rule (the database).
@@ -275,78 +198,6 @@ void fill_whole_surface(MeshingResult& r, const QuadSurface& surface, Resources&
   } catch (const InputError& e) {
     r.fill_failure = e.what();
   }
-}
-
-/// A solid with handles, cut into a ball (handle_cuts.hpp), the ball meshed
-/// by the whole pipeline, and its mesh glued and placed again, the surface's
-/// nodes fixed and the disks' free. The result reports the ball's weave.
-void mesh_through_cuts(MeshingResult& r, const QuadSurface& surface, std::vector<engine::Rule> rules,
-                       const MeshingOptions& options) {
-  if (options.on_stage) options.on_stage("cutting along meridian disks");
-  std::string why_not;
-  const auto cut = cut_into_ball(surface, why_not);
-  if (!cut) {
-    r.closure_failure = "the solid could not be cut into a ball: " + why_not;
-    return;
-  }
-  MeshingResult ball = mesh_surface(cut->ball, std::move(rules), options);
-  r.placements += ball.placements;
-  r.placement_seconds += ball.placement_seconds;
-  const std::string disks = fmt::format("{} disk{}", cut->disks, cut->disks == 1 ? "" : "s");
-  if (!ball.combinatorially_valid()) {
-    const std::string& why = !ball.closure_failure.empty() ? ball.closure_failure
-                             : !ball.failure.empty()       ? ball.failure
-                                                           : ball.fill_failure;
-    r.closure_failure = fmt::format("cut along {} into a ball, which got no mesh: {}", disks, why);
-    return;
-  }
-  // The ball's boundary layer covers the disks too, two sheets inside the
-  // solid once glued. Taken back, the solid is placed (and given its own
-  // layer) as a whole; but the sheets give the nodes by the disks room, so
-  // both are placed and the better kept (torus 3 x 16: 0.140 with them, -0.510
-  // without), on a tie the one without.
-  auto glued = [&](bool without_layer) {
-    Candidate c;
-    HexMesh ball_mesh = *ball.mesh;
-    c.source = ball.source;
-    geometry::BoundaryLayerReport kept_layer;  // the ball's, when not taken back
-    if (without_layer && geometry::remove_boundary_layer(ball_mesh, ball.boundary_layer.hexes_added))
-      c.source.resize(ball_mesh.hexes.size());
-    else
-      kept_layer = ball.boundary_layer;
-    c.mesh = glue_disks(ball_mesh, *cut, surface, c.fixed);
-    place(c, surface, r);  // sets c.layer when it adds one
-    c.layer.hexes_added += kept_layer.hexes_added;
-    c.layer.nodes_added += kept_layer.nodes_added;
-    return c;
-  };
-  Candidate c;
-  try {
-    c = glued(true);
-    if (ball.boundary_layer.hexes_added > 0) {
-      Candidate with_sheets = glued(false);
-      if (with_sheets.valid() && (!c.valid() || improves(with_sheets.smoothing, c.smoothing))) c = std::move(with_sheets);
-    }
-  } catch (const std::runtime_error& e) {
-    r.closure_failure = fmt::format("cut along {} into a ball and meshed it, but could not glue it back: {}", disks, e.what());
-    return;
-  }
-  if (!c.valid()) {
-    const auto* f = c.check->first_failure();
-    r.closure_failure = fmt::format("cut along {} into a ball and meshed it, but glued back criterion {} ({}) fails: {}",
-                                    disks, f->number, f->name, f->detail);
-    return;
-  }
-  r.attempts_before_cut = r.attempts;
-  r.stc = std::move(ball.stc);
-  r.weave = std::move(ball.weave);
-  r.closure = ball.closure;
-  r.strategy = ball.strategy;
-  r.attempts += ball.attempts;
-  r.wide_search_stopped = ball.wide_search_stopped;
-  adopt(r, std::move(c), ball.made_by);
-  r.cut_disks = cut->disks;
-  r.woven_attempt = ball.woven_attempt == 0 ? 0 : r.attempts_before_cut + ball.woven_attempt;
 }
 
 }  // namespace
