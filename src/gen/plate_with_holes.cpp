@@ -6,8 +6,10 @@ namespace loom::gen {
 
 QuadSurface plate_with_holes(int holes, int k) {
   require_at_least("plate", {{"N", holes}, {"K", k}});
-  const std::uint64_t cells = std::uint64_t(2 * holes + 1) * 3 * std::uint64_t(k) * std::uint64_t(k) * k;
-  require_not_too_large("plate", 2 * cells);
+  // In 64 bits before anything is made: 2N + 1 alone overflows an int at N = 2^30.
+  const std::uint64_t length = 2 * std::uint64_t(holes) + 1, side = std::uint64_t(k);
+  require_not_too_large("plate", length * side);
+  require_not_too_large("plate", 6 * length * side * side * side);
   HexMesh grid = hexgrid((2 * holes + 1) * k, 3 * k, k);
   for (Vec3& p : grid.points) p = (1.0 / k) * p;
   // Hole h is the unit square [2h+1, 2h+2] x [1, 2].
