@@ -152,6 +152,17 @@ TEST_CASE("plate: N holes give genus N, and its volume is the cubes left") {
   }
 }
 
+TEST_CASE("ring: genus 1 whatever the bosses, the volume of its cubes, no two bosses sharing an edge") {
+  // 4 (L - 1) >= 3N: L is 3 for N <= 2, 4 for N <= 4, 6 for N = 6, 7 for N = 7 and 8.
+  for (auto [n, k, ring] : {std::tuple{1, 1, 8}, {4, 1, 12}, {6, 2, 20}, {7, 1, 24}, {8, 1, 24}}) {
+    CAPTURE(n);
+    CAPTURE(k);
+    const QuadSurface s = gen::ring_of_bosses(n, k);
+    CHECK(check_surface(s) == 1);
+    CHECK(signed_volume(s) == doctest::Approx(ring + n));
+  }
+}
+
 TEST_CASE("listed surfaces of literature.md §5") {
   SUBCASE("Schneiders' pyramid: V=18, Q=16, valences 3 x8 and 4 x10") {
     const QuadSurface s = gen::schneiders();

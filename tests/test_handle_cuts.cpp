@@ -118,3 +118,16 @@ TEST_CASE("genus 2: the solid whose meridians are all even meshes, cut along two
     }
   }
 }
+
+TEST_CASE("a ring of bosses is woven exactly, its grid of cubes, through one cut") {
+  // N bosses on a ring of 4 (L - 1) cubes: 8 + 1, 12 + 4 and 24 + 8 cubes.
+  for (auto [bosses, cubes] : {std::pair{1, 9}, {4, 16}, {8, 32}}) {
+    CAPTURE(bosses);
+    const auto r = mesh(gen::ring_of_bosses(bosses, 1));
+    REQUIRE(r.combinatorially_valid());
+    CHECK(r.cut_disks == 1);
+    CHECK(r.mesh->hexes.size() == static_cast<std::size_t>(cubes));
+    CHECK(r.source == std::vector(r.mesh->hexes.size(), closure::HexSource::woven));
+    CHECK(r.check->quality.min_scaled_jacobian > 0.9);
+  }
+}

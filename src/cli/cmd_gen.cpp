@@ -22,7 +22,7 @@ struct Options {
   std::string seed, size;  ///< named forms of the sizes S and K
 };
 
-/// `randquad F --seed S`, `bosses --size K` and `bosses-free --size K` (K defaults to 1) name their
+/// `randquad F --seed S` and `KIND ... --size K` (K defaults to 1) name their
 /// last size; the positional form works too.
 void fill_named_sizes(const loom::gen::GeneratorKind& kind, Options& o) {
   while (o.args.size() < kind.params.size()) {
@@ -96,7 +96,7 @@ loom::cli::Register reg{
        app.add_option("ARGS", o->args, "the kind's whole-number sizes");
        app.add_option("-o,--output", o->output, "file to write; the format follows the extension")->required();
        app.add_option("--seed", o->seed, "the seed S of randquad");
-       app.add_option("--size", o->size, "the size K of bosses and bosses-free (default 1)");
+       app.add_option("--size", o->size, "the size K of bosses, bosses-free, plate and ring (default 1)");
        app.footer(kinds_help());
        return std::function<int()>([o] { return run(*o); });
      }}};

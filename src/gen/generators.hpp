@@ -66,6 +66,11 @@ QuadSurface torus_chain(int n, const std::vector<int>& tubes);
 /// h is [2h+1, 2h+2] x [1, 2]), each cube cut into K^3: genus N, every meridian
 /// 4K edges, and its hex mesh is its grid. Needs N, K >= 1.
 QuadSurface plate_with_holes(int holes, int k);
+/// A ring of unit cubes round a square hole (the square loop of side L, the
+/// least L >= 3 with 4 (L - 1) >= 3N cells) with N unit-cube bosses on top,
+/// spread evenly round it and never touching; each cube cut into K^3. Genus 1,
+/// meridian 4K edges, and its hex mesh is its grid. Needs N, K >= 1.
+QuadSurface ring_of_bosses(int bosses, int k);
 /// A random quadrangulation of the sphere with exactly `faces` quads (even,
 /// 6..kMaxRandquadFaces), simple, every node of degree >= 3, nodes on the unit
 /// sphere. Grown from the cube by hex flips (k = 1, 2) mixed with k = 3 hex
