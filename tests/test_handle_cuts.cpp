@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "engine/rule_compiler.hpp"
+#include "src/cad/cad_part.hpp"
 #include "src/gen/generators.hpp"
 #include "src/mesh/surface_validation.hpp"
 #include "src/pipeline/handle_cuts.hpp"
@@ -130,4 +131,27 @@ TEST_CASE("a ring of bosses is woven exactly, its grid of cubes, through one cut
     CHECK(r.source == std::vector(r.mesh->hexes.size(), closure::HexSource::woven));
     CHECK(r.check->quality.min_scaled_jacobian > 0.9);
   }
+}
+
+TEST_CASE("where a short meridian turns round one quad at every node, another short one takes the disk") {
+  // The bundled flange at size 11: after some cuts, the one meridian left is a
+  // 16-edge staircase round a bolt hole's bar, with no node for a disk's corner.
+  const auto flange =
+      cad::quad_surface_of_part(std::filesystem::path(LOOM_SOURCE_DIR) / "examples" / "flange.geo", 11.0);
+  const pipeline::CutSurface c = cut(flange.surface);
+  CHECK(c.disks == 5);
+  QuadSurface ball = c.ball;
+  CHECK(validate_surface(ball, "the cut flange").genus == 0);
+}
+
+TEST_CASE("more short meridians than the basis: distinct, each one of a torus's tube circles") {
+  const QuadSurface torus = gen::torus(6, 4);
+  const MeridianReport report = find_meridians(torus, 10);
+  REQUIRE(report.alternatives.size() == 6);  // the six tube circles, no more: the rest are longer
+  std::set<std::set<std::uint32_t>> distinct;
+  for (const NodeCycle& cycle : report.alternatives) {
+    CHECK(cycle.size() == 4);
+    distinct.emplace(cycle.begin(), cycle.end());
+  }
+  CHECK(distinct.size() == 6);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <map>
+#include <set>
 
 namespace loom {
 
@@ -68,6 +69,9 @@ std::vector<Words> left_null_space(std::vector<Words> rows, std::size_t words) {
 
 // Breadth-first trees from this many roots at most cover V x E up to here.
 constexpr std::size_t kCandidateWork = 20'000'000;
+// Candidates kept per class beyond the shortest; many are one cycle seen from
+// each of its nodes, so more are kept than are usually asked for.
+constexpr std::size_t kKeptPerClass = 64;
 
 }  // namespace
 
@@ -99,6 +103,7 @@ void MeridianSearch::collect_candidates() {
     if (!incident_[v].empty()) roots.push_back(v);
   const std::size_t stride = std::max<std::size_t>(1, roots.size() * edges / kCandidateWork);
   std::map<Words, Candidate> best;
+  std::map<Words, std::vector<Candidate>> kept;
   std::vector<std::uint64_t> cls(incident_.size() * words), image(incident_.size() * words);
   for (std::size_t r = 0; r < roots.size(); r += stride) {
     const NodeTree tree = breadth_first_tree(homology_.edges, incident_, roots[r]);
@@ -124,11 +129,42 @@ void MeridianSearch::collect_candidates() {
       const Candidate candidate{tree.depth[x] + tree.depth[y] + 1, roots[r], e};
       auto [it, inserted] = best.emplace(c, candidate);
       if (!inserted && candidate.key() < it->second.key()) it->second = candidate;
+      keep_shortest(kept[c], candidate);
     }
   }
   bounding_.assign(best.begin(), best.end());
   std::sort(bounding_.begin(), bounding_.end(),
             [](const auto& a, const auto& b) { return a.second.key() < b.second.key(); });
+  for (const auto& [cls, few] : kept) alternatives_.insert(alternatives_.end(), few.begin(), few.end());
+  std::sort(alternatives_.begin(), alternatives_.end(), [](const auto& a, const auto& b) { return a.key() < b.key(); });
+}
+
+// Keeps the kKeptPerClass shortest, one per root, sorted.
+void MeridianSearch::keep_shortest(std::vector<Candidate>& few, const Candidate& candidate) {
+  auto same_root = std::find_if(few.begin(), few.end(), [&](const Candidate& c) { return c.root == candidate.root; });
+  if (same_root != few.end()) {
+    if (candidate.key() >= same_root->key()) return;
+    few.erase(same_root);
+  } else if (few.size() == kKeptPerClass) {
+    if (candidate.key() >= few.back().key()) return;
+    few.pop_back();
+  }
+  few.insert(std::upper_bound(few.begin(), few.end(), candidate,
+                              [](const Candidate& a, const Candidate& b) { return a.key() < b.key(); }),
+             candidate);
+}
+
+std::vector<NodeCycle> MeridianSearch::alternatives(std::size_t count) const {
+  std::vector<NodeCycle> cycles;
+  std::set<std::vector<std::uint32_t>> seen;
+  for (const Candidate& candidate : alternatives_) {
+    if (cycles.size() == count) break;
+    NodeCycle cycle = walk_of(candidate);
+    std::vector<std::uint32_t> nodes = cycle;
+    std::sort(nodes.begin(), nodes.end());
+    if (seen.insert(std::move(nodes)).second) cycles.push_back(std::move(cycle));
+  }
+  return cycles;
 }
 
 std::vector<NodeCycle> MeridianSearch::basis() const {

@@ -21,6 +21,10 @@ public:
   bool consistent() const { return inside_.size() * 2 == homology_.rank(); }
   /// g cycles whose classes span those bounding inside, short ones first.
   std::vector<NodeCycle> basis() const;
+  /// Up to `count` distinct short cycles bounding inside, of any class but
+  /// zero, shortest first: other places a disk may span when a basis cycle
+  /// cannot take one.
+  std::vector<NodeCycle> alternatives(std::size_t count) const;
   /// A short odd cycle bounding inside, if any class bounding inside is odd.
   std::optional<NodeCycle> odd() const;
 
@@ -30,6 +34,7 @@ private:
     auto key() const { return std::tuple(length, root, edge); }
   };
   void collect_candidates();
+  static void keep_shortest(std::vector<Candidate>& few, const Candidate& candidate);
   NodeCycle walk_of(const Candidate& c) const;
   NodeCycle walk_of_class(const HomologyClass& c) const;
   bool odd_class(const HomologyClass& c) const;
@@ -41,6 +46,7 @@ private:
   HomologyClass parity_;               // bit i: the length of basis cycle i is odd
   std::vector<std::uint64_t> image_of_edge_;  // per edge, the linking row sum of its class
   std::vector<std::pair<HomologyClass, Candidate>> bounding_;  // shortest per class, by length
+  std::vector<Candidate> alternatives_;  // the shortest few per class, from distinct roots, by length
 };
 
 }  // namespace loom

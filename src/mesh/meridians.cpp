@@ -57,7 +57,7 @@ std::optional<std::vector<Words>> linking_matrix(const QuadSurface& s, const Sur
 
 }  // namespace
 
-MeridianReport find_meridians(const QuadSurface& surface) {
+MeridianReport find_meridians(const QuadSurface& surface, std::size_t alternatives) {
   MeridianReport report;
   const SurfaceHomology h = surface_homology(surface);
   report.genus = static_cast<int>(h.rank() / 2);
@@ -74,6 +74,7 @@ MeridianReport find_meridians(const QuadSurface& surface) {
   }
   report.meridians = search.basis();
   report.odd = search.odd();
+  report.alternatives = search.alternatives(alternatives);
   return report;
 }
 

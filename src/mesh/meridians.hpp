@@ -34,13 +34,16 @@ struct MeridianReport {
   bool determined = true;
   /// A basis of the meridians, shortest found first (short, not proven shortest).
   std::vector<NodeCycle> meridians;
+  /// With find_meridians(surface, n): up to n more short cycles bounding
+  /// inside, shortest first (MeridianSearch::alternatives).
+  std::vector<NodeCycle> alternatives;
   /// A short meridian with an odd number of edges, if there is one: then no
   /// hex mesh has this boundary.
   std::optional<NodeCycle> odd;
 };
 
 /// Requires a surface that validate_surface accepts, facing outward.
-MeridianReport find_meridians(const QuadSurface& surface);
+MeridianReport find_meridians(const QuadSurface& surface, std::size_t alternatives = 0);
 
 /// "a-b-c-a (3 edges)": the nodes, the first repeated at the end, at most
 /// `shown` of them before an ellipsis.

@@ -20,6 +20,9 @@ namespace loom::pipeline {
 
 namespace {
 
+// Short meridians tried, beyond the basis, when no basis cycle takes a disk.
+constexpr std::size_t kAlternativeMeridians = 32;
+
 using DirectedEdges = std::unordered_map<std::uint64_t, std::uint32_t>;  // a -> b to the quad holding it
 
 std::uint64_t key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; }
@@ -261,8 +264,26 @@ std::optional<CutSurface> cut_into_ball(const QuadSurface& surface, std::string&
       return std::nullopt;
     }
     genus_before = report.genus;
-    auto step = cut_along_disk(whole.ball, report.meridians.front(), why_not);
-    if (!step) return std::nullopt;
+    // Any meridian lowers the genus by one: the shortest that takes a disk is
+    // cut, tried among the basis first, then among more short ones (a disk
+    // needs four corners where the meridian does not turn round one quad).
+    std::optional<CutSurface> step;
+    std::string first_why_not;
+    std::size_t tried = 0;
+    auto try_each = [&](const std::vector<NodeCycle>& meridians) {
+      for (const NodeCycle& meridian : meridians) {
+        if (step) return;
+        ++tried;
+        step = cut_along_disk(whole.ball, meridian, why_not);
+        if (!step && first_why_not.empty()) first_why_not = why_not;
+      }
+    };
+    try_each(report.meridians);
+    if (!step) try_each(find_meridians(whole.ball, kAlternativeMeridians).alternatives);
+    if (!step) {
+      why_not = fmt::format("{}; nor did any of the {} other short meridians found take a disk", first_why_not, tried - 1);
+      return std::nullopt;
+    }
     const auto before = static_cast<std::uint32_t>(whole.ball.points.size());
     const auto disks_before = static_cast<std::uint32_t>(whole.disk_points.size());
     std::vector<std::uint32_t> glued;

@@ -34,7 +34,7 @@ struct CutSurface {
 /// a simple cycle of at least 4 edges, an even number.
 std::optional<CutSurface> cut_along_disk(const QuadSurface& surface, const NodeCycle& meridian, std::string& why_not);
 
-/// The surface cut along a disk spanning its shortest meridian found, again
+/// The surface cut along a disk spanning the shortest meridian found that takes one, again
 /// and again until it is a ball (genus 0), or why not. Each cut lowers the
 /// genus by one; the meridians are found afresh each time, so later disks may
 /// cross the earlier ones' sides.
