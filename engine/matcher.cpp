@@ -177,14 +177,18 @@ struct Matcher::Search {
         return matcher.evaluate(*op.expr, m) != 0 && step(ops, k + 1, done);
       case PlanOp::Kind::count: {
         std::int64_t counted = 0;
-        auto ring = g.incoming(m.elements[op.target]);
-        for (auto it = ring.begin(); it != ring.end(); ++it) {
-          if (g.slot_port(*it) != op.port) continue;
-          Id o = g.slot_owner(*it);
-          // Distinct owners: skip an owner already met earlier in the ring.
+        const Id target = m.elements[op.target];
+        const unsigned arity = g.schema().port(op.port).arity;
+        for (SlotId in : g.incoming(target)) {
+          if (g.slot_port(in) != op.port) continue;
+          Id o = g.slot_owner(in);
+          // Distinct owners: an owner holding the target in several slots is
+          // counted at the first of them only (the ring can be long: a scan of
+          // it per entry made this quadratic).
+          const unsigned here = g.slot_index(in);
           bool again = false;
-          for (auto before = ring.begin(); before != it && !again; ++before)
-            again = g.slot_owner(*before) == o && g.slot_port(*before) == op.port;
+          for (unsigned before = 0; before < here && before < arity && !again; ++before)
+            again = g.at(o, op.port, before) == target;
           if (again) continue;
           if (op.count_empty_slot >= 0) {
             counted += g.at(o, op.count_empty_port, static_cast<unsigned>(op.count_empty_slot)) == no_element;
