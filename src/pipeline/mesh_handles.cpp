@@ -53,6 +53,7 @@ void mesh_through_cuts(MeshingResult& r, const QuadSurface& surface, std::vector
   };
   Candidate c;
   try {
+    if (options.on_stage) options.on_stage("placing the glued solid");
     c = glued(true);
     if (ball.boundary_layer.hexes_added > 0) {
       Candidate with_sheets = glued(false);

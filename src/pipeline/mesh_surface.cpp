@@ -123,6 +123,7 @@ void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMe
       r.closure_failure = "the search left cavities and the fill is off";
       return;
     }
+    if (options.on_stage) options.on_stage("placing nodes");
     Candidate c = placed_candidate(std::move(closed), surface, r);
     if (!c.valid()) {
       const auto* f = c.check->first_failure();

@@ -73,7 +73,8 @@ struct MeshingOptions {
   std::function<void(std::size_t attempt, const engine::Strategy&, const weave::WeaveResult& previous)> before_attempt;
   /// Called as each stage starts: "weaving", "placing nodes", "closing
   /// cavities", "searching from the surface", "searching symmetric pairs",
-  /// "filling the surface" (progress).
+  /// "filling the surface"; with handles also "cutting along meridian disks"
+  /// and "placing the glued solid" (progress).
   std::function<void(const char* stage)> on_stage;
   Closure closure = Closure::none;
   Prefer prefer = Prefer::quality;
