@@ -1,5 +1,7 @@
 #include "src/pipeline/candidate.hpp"
 
+#include <fmt/format.h>
+
 #include "src/geometry/boundary_layer.hpp"
 
 namespace loom::pipeline {
@@ -41,6 +43,12 @@ void place(Candidate& c, const QuadSurface& surface, MeshingResult& r) {
   c.check = check_hex_mesh(c.mesh, &surface);
   if (locked.below_0_2 == 0 && c.valid() && (c.smoothing.below_zero_after > 0 || c.smoothing.below_0_2_after > 0))
     place_with_boundary_layer(c, surface, true);
+}
+
+std::string Candidate::why_invalid() const {
+  if (!check) return "the mesh was not checked";
+  const auto* f = check->first_failure();
+  return f ? fmt::format("criterion {} ({}) fails: {}", f->number, f->name, f->detail) : "";
 }
 
 void adopt(MeshingResult& r, Candidate&& c, std::string made_by) {

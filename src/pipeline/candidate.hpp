@@ -28,6 +28,8 @@ struct Candidate {
   std::optional<ValidityReport> check;
   geometry::BoundaryLayerReport layer;
   bool valid() const { return check && check->combinatorial_valid(); }
+  /// "criterion N (name) fails: detail" for the first criterion that fails.
+  std::string why_invalid() const;
 };
 
 /// Adds one placement and its seconds to the result's figures as it goes out

@@ -251,8 +251,9 @@ std::optional<CutSurface> cut_into_ball(const QuadSurface& surface, std::string&
     }
     // The cavity closure needs more than validation does: three quads or more
     // at every node, no two quads on one diagonal.
-    if (auto bad = closure::improper_vertices(quadmap::from_surface(whole.ball)); !bad.empty()) {
-      const auto degree = quadmap::degrees(quadmap::from_surface(whole.ball));
+    const quadmap::QuadMap map = quadmap::from_surface(whole.ball);
+    if (auto bad = closure::improper_vertices(map); !bad.empty()) {
+      const auto degree = quadmap::degrees(map);
       why_not = fmt::format("after {} cut{} node {} ({} quads) is not proper", whole.disks, whole.disks == 1 ? "" : "s",
                             bad.front(), degree[bad.front()]);
       return std::nullopt;

@@ -64,9 +64,7 @@ void mesh_through_cuts(MeshingResult& r, const QuadSurface& surface, std::vector
     return;
   }
   if (!c.valid()) {
-    const auto* f = c.check->first_failure();
-    r.closure_failure = fmt::format("cut along {} into a ball and meshed it, but glued back criterion {} ({}) fails: {}",
-                                    disks, f->number, f->name, f->detail);
+    r.closure_failure = fmt::format("cut along {} into a ball and meshed it, but glued back {}", disks, c.why_invalid());
     return;
   }
   r.attempts_before_cut = r.attempts;

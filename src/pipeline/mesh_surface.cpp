@@ -126,8 +126,7 @@ void close_cavities_of(MeshingResult& r, const QuadSurface& surface, const HexMe
     if (options.on_stage) options.on_stage("placing nodes");
     Candidate c = placed_candidate(std::move(closed), surface, r);
     if (!c.valid()) {
-      const auto* f = c.check->first_failure();
-      r.closure_failure = f ? "criterion " + std::to_string(f->number) + " (" + f->name + ") fails: " + f->detail : "";
+      r.closure_failure = c.why_invalid();
       return;
     }
     adopt(r, std::move(c), "closed");
