@@ -217,3 +217,36 @@ TEST_CASE("gluing a hex changes the quad count by 6 - 2k and keeps the map close
   CHECK(fill_cube(cube, twins(cube), last));
   CHECK_FALSE(fill_cube(box, twins(box), last));
 }
+
+TEST_CASE("twins and degrees after a gluing, updated from before, are those of the map after") {
+  // A walk of random proper gluings down several maps; at each step the
+  // updates must agree with twins() and degrees() of the map rebuilt.
+  std::mt19937 rng(11);
+  std::size_t compared = 0, open_edges_matched = 0;
+  for (const QuadSurface& surface : {gen::box(3, 2, 2), gen::randquad(60, 4), gen::cubesphere(3)}) {
+    QuadMap m = from_surface(surface);
+    auto twin = twins(m);
+    auto degree = degrees(m);
+    for (int step = 0; step < 40 && m.size() > 6; ++step) {
+      GluedHex g;
+      bool glued = false;
+      for (int tries = 0; tries < 400 && !glued; ++tries) {
+        const Gluing at{static_cast<std::uint32_t>(rng() % m.size()), static_cast<std::uint8_t>(rng() % 16)};
+        glued = glue_hex(m, twin, degree, at, g) && why_not_proper(g.after).empty();
+      }
+      if (!glued) break;
+      const auto updated_twin = twins_after_gluing(m, twin, g);
+      const auto updated_degree = degrees_after_gluing(m, degree, g);
+      CHECK(updated_twin == twins(g.after));
+      CHECK(updated_degree == degrees(g.after));
+      for (auto q = static_cast<std::uint32_t>(m.size() - static_cast<std::size_t>(g.k)); q < g.after.size(); ++q)
+        open_edges_matched += updated_twin[4 * q] != no_dart;
+      m = g.after;
+      twin = updated_twin;
+      degree = updated_degree;
+      ++compared;
+    }
+  }
+  CHECK(compared >= 60);
+  CHECK(open_edges_matched > 0);
+}

@@ -54,14 +54,17 @@ class QuadsAtVertex {
 public:
   explicit QuadsAtVertex(const quadmap::QuadMap& m);
   /// Calls f(quad index) for each quad with `v` as a corner.
+  /// In increasing order of quad index.
   template <class F>
   void each(std::uint32_t v, F&& f) const {
-    auto it = std::lower_bound(pairs_.begin(), pairs_.end(), std::pair<std::uint32_t, std::uint32_t>{v, 0});
-    for (; it != pairs_.end() && it->first == v; ++it) f(it->second);
+    if (v + 1 >= first_.size()) return;
+    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) f(quads_[i]);
   }
 
 private:
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  ///< (vertex, quad), sorted
+  // Built by counting, not sorting: it is made at every expansion of a search.
+  std::vector<std::uint32_t> first_;  ///< per vertex, where its quads begin in quads_ (one past the end too)
+  std::vector<std::uint32_t> quads_;
 };
 
 /// Whether the front after a gluing onto `before` is still proper, checked

@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "src/closure/inherited_checks.hpp"
 #include "src/closure/hex_meeting.hpp"
 #include "src/closure/irregularity.hpp"
 #include "src/quadmap/canonical.hpp"
@@ -95,6 +96,9 @@ public:
     std::vector<std::int32_t> near;
     std::vector<quadmap::Dart> twin;
     std::vector<int> degree;
+    quadmap::GluedHex made_by;  ///< the gluing that made it from its parent's front (none at the start)
+    PlanMasks plans;            ///< of the gluings tried when it was expanded
+    GluingVerdicts verdicts;
   };
 
   ShellSpace(const Cavity& cavity, const Database* db, std::size_t max_front, double irregularity_weight)
@@ -142,13 +146,24 @@ public:
     // and generating them all would be most of the work.
     const int least_k = f.front.size() > kLargeFront ? 3 : 1;
     std::size_t emitted = 0;
+    const Front* parent = s.parent >= 0 ? &expanded_[static_cast<std::size_t>(s.parent)] : nullptr;
+    const PlanMasks known_plans =
+        parent ? parent->plans.for_child(f.front, f.twin, at, f.made_by) : PlanMasks(f.front.size());
+    PlanMasks plans(f.front.size());
+    GluingVerdicts verdicts;
     for (int pass = 0; pass < 2; ++pass) {
       if (pass == 1 && (least_k == 1 || emitted > 0)) break;
       const int pass_least_k = pass == 0 ? least_k : 1;
       for (std::uint32_t q = 0; q < f.front.size(); ++q)
         for (std::uint8_t sides = 0; sides < 16; ++sides) {
           if (std::popcount(static_cast<unsigned>(sides)) + 1 < pass_least_k) continue;
-          if (!quadmap::plan_gluing(f.front, f.twin, f.degree, {q, sides}, glued)) continue;
+          if (known_plans.known(q, sides) && !known_plans.planned(q, sides)) {
+            plans.record(q, sides, false);
+            continue;
+          }
+          const bool planned = quadmap::plan_gluing(f.front, f.twin, f.degree, {q, sides}, glued);
+          plans.record(q, sides, planned);
+          if (!planned) continue;
           if (pass == 1 && glued.k >= least_k) continue;  // tried in the first pass
           const std::uint32_t quads = s.front_quads + 6 - 2 * static_cast<std::uint32_t>(glued.k);
           if (quads > max_front_) continue;
@@ -156,8 +171,15 @@ public:
           std::uint64_t key = s.key;
           for (std::uint32_t c : covered) key ^= quad_hash(f.front.quads[c]);
           if (!tried.insert(key).second) continue;  // the same hex from another bottom
-          if (!glued_front_is_proper(f.front, at, glued)) continue;
-          if (!touches_front_properly(glued.hex, f.front, at, covered) || !fits(glued.hex, f, near_at, covered)) continue;
+          const auto known = parent ? parent->verdicts.for_child(key ^ s.key, glued.hex, f.made_by.hex)
+                                    : GluingVerdicts::Verdict::unknown;
+          const bool ok = known != GluingVerdicts::Verdict::unknown
+                              ? known == GluingVerdicts::Verdict::fits
+                              : glued_front_is_proper(f.front, at, glued) &&
+                                    touches_front_properly(glued.hex, f.front, at, covered) &&
+                                    fits(glued.hex, f, near_at, covered);
+          verdicts.record(key ^ s.key, ok);
+          if (!ok) continue;
           for (int a = 0; a < 6 - glued.k; ++a) key ^= quad_hash(glued.added[static_cast<std::size_t>(a)]);
           State next;
           next.key = key;
@@ -171,6 +193,9 @@ public:
           ++emitted;
         }
     }
+    verdicts.seal();
+    expanded_[static_cast<std::size_t>(index)].plans = std::move(plans);
+    expanded_[static_cast<std::size_t>(index)].verdicts = std::move(verdicts);
     profile_.gluing += clock.lap();
   }
 
@@ -178,25 +203,29 @@ public:
 
   /// The front of a state (the start, or one a gluing from an expanded state reaches).
   Front rebuild(const State& s) const {
-    if (s.parent < 0) return with_lookups({cavity_.front, cavity_.owner, {}, {}, {}});
+    if (s.parent < 0) {
+      Front f{cavity_.front, cavity_.owner, {}, {}, {}, {}, {}, {}};
+      f.twin = quadmap::twins(f.front);
+      f.degree = quadmap::degrees(f.front);
+      return f;
+    }
     const Front& p = expanded_[static_cast<std::size_t>(s.parent)];
-    quadmap::GluedHex glued;
-    quadmap::plan_gluing(p.front, p.twin, p.degree, s.gluing, glued);
     Front f;
+    quadmap::GluedHex& glued = f.made_by;
+    quadmap::plan_gluing(p.front, p.twin, p.degree, s.gluing, glued);
     f.front = quadmap::after_gluing(p.front, glued);
+    f.twin = quadmap::twins_after_gluing(p.front, p.twin, glued);
+    f.degree = quadmap::degrees_after_gluing(p.front, p.degree, glued);
     const auto covered_end = glued.covered.cbegin() + glued.k;
     for (std::uint32_t o = 0; o < p.front.size(); ++o)
       if (std::find(glued.covered.cbegin(), covered_end, o) == covered_end) f.owner.push_back(p.owner[o]);
     f.owner.resize(f.front.size(), id_of_placed(s.last));
-    std::vector<std::uint32_t> on_front;
-    for (const Quad& q : f.front.quads) on_front.insert(on_front.end(), q.begin(), q.end());
-    std::sort(on_front.begin(), on_front.end());
     for (std::int32_t a : p.near)
       if (std::any_of(arena_[static_cast<std::size_t>(a)].hex.begin(), arena_[static_cast<std::size_t>(a)].hex.end(),
-                      [&](std::uint32_t v) { return std::binary_search(on_front.begin(), on_front.end(), v); }))
+                      [&](std::uint32_t v) { return f.degree[v] > 0; }))
         f.near.push_back(a);
     f.near.push_back(s.last);
-    return with_lookups(std::move(f));
+    return f;
   }
 
   /// Arena indices of the hexes placed on the way to `s`, first placed first.
@@ -212,12 +241,6 @@ private:
   static constexpr std::size_t canonical_limit = 40;
   static constexpr std::size_t kLargeFront = 64;
 
-  static Front with_lookups(Front f) {
-    f.twin = quadmap::twins(f.front);
-    f.degree = quadmap::degrees(f.front);
-    return f;
-  }
-
   std::int32_t id_of_placed(std::int32_t arena_index) const {
     return static_cast<std::int32_t>(cavity_.hexes.size()) + arena_index;
   }
@@ -231,18 +254,27 @@ private:
   class NearAtVertex {
   public:
     NearAtVertex(const std::vector<std::int32_t>& near, const std::vector<Placed>& arena) {
+      std::uint32_t bound = 0;
       for (std::int32_t a : near)
-        for (std::uint32_t v : arena[static_cast<std::size_t>(a)].hex) pairs_.emplace_back(v, a);
-      std::sort(pairs_.begin(), pairs_.end());
+        for (std::uint32_t v : arena[static_cast<std::size_t>(a)].hex) bound = std::max(bound, v + 1);
+      first_.assign(bound + 1, 0);
+      for (std::int32_t a : near)
+        for (std::uint32_t v : arena[static_cast<std::size_t>(a)].hex) ++first_[v + 1];
+      for (std::uint32_t v = 0; v < bound; ++v) first_[v + 1] += first_[v];
+      hexes_.resize(8 * near.size());
+      std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
+      for (std::int32_t a : near)
+        for (std::uint32_t v : arena[static_cast<std::size_t>(a)].hex) hexes_[next[v]++] = a;
     }
     template <class F>
     void each(std::uint32_t v, F&& f) const {
-      auto it = std::lower_bound(pairs_.begin(), pairs_.end(), std::pair<std::uint32_t, std::int32_t>{v, INT32_MIN});
-      for (; it != pairs_.end() && it->first == v; ++it) f(it->second);
+      if (v + 1 >= first_.size()) return;
+      for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) f(hexes_[i]);
     }
 
   private:
-    std::vector<std::pair<std::uint32_t, std::int32_t>> pairs_;
+    std::vector<std::uint32_t> first_;  ///< per vertex, where its hexes begin in hexes_
+    std::vector<std::int32_t> hexes_;
   };
 
   /// Hexes round an edge before a gluing: the cavity's and the placed ones

@@ -63,6 +63,50 @@ QuadMap after_gluing(const QuadMap& m, const GluedHex& planned) {
   return after;
 }
 
+std::vector<Dart> twins_after_gluing(const QuadMap& m, const std::vector<Dart>& twin, const GluedHex& planned) {
+  const auto* covered_end = planned.covered.begin() + planned.k;
+  constexpr std::uint32_t gone = 0xffffffffu;
+  std::vector<std::uint32_t> renumbered(m.size(), gone);
+  std::uint32_t kept = 0;
+  for (std::uint32_t q = 0; q < m.size(); ++q)
+    if (std::find(planned.covered.begin(), covered_end, q) == covered_end) renumbered[q] = kept++;
+  const auto added = static_cast<std::uint32_t>(6 - planned.k);
+  std::vector<Dart> out(4 * static_cast<std::size_t>(kept + added), no_dart);
+  // Darts whose twin was covered or is added: all on the hex's edges, a few dozen at most.
+  std::vector<std::pair<Dart, std::array<Vertex, 2>>> open;
+  for (std::uint32_t q = 0; q < m.size(); ++q) {
+    if (renumbered[q] == gone) continue;
+    for (Dart i = 0; i < 4; ++i) {
+      const Dart t = twin[4 * q + i], d = 4 * renumbered[q] + i;
+      if (t != no_dart && renumbered[t / 4] != gone)
+        out[d] = 4 * renumbered[t / 4] + t % 4;
+      else
+        open.push_back({d, {m.tail(4 * q + i), m.head(4 * q + i)}});
+    }
+  }
+  for (std::uint32_t a = 0; a < added; ++a) {
+    const Quad& quad = planned.added[a];
+    for (Dart i = 0; i < 4; ++i) open.push_back({4 * (kept + a) + i, {quad[i], quad[(i + 1) % 4]}});
+  }
+  for (const auto& [d, edge] : open)
+    for (const auto& [e, back] : open)
+      if (back[0] == edge[1] && back[1] == edge[0]) {
+        out[d] = e;
+        break;
+      }
+  return out;
+}
+
+std::vector<int> degrees_after_gluing(const QuadMap& m, const std::vector<int>& degree, const GluedHex& planned) {
+  std::vector<int> out = degree;
+  out.resize(std::max<std::size_t>(planned.vertex_bound, m.vertex_bound), 0);
+  for (int c = 0; c < planned.k; ++c)
+    for (Vertex v : m.quads[planned.covered[static_cast<std::size_t>(c)]]) --out[v];
+  for (int a = 0; a < 6 - planned.k; ++a)
+    for (Vertex v : planned.added[static_cast<std::size_t>(a)]) ++out[v];
+  return out;
+}
+
 bool glue_hex(const QuadMap& m, const std::vector<Dart>& twin, const std::vector<int>& degree, Gluing g,
               GluedHex& out) {
   if (!plan_gluing(m, twin, degree, g, out)) return false;

@@ -53,6 +53,13 @@ bool plan_gluing(const QuadMap& m, const std::vector<Dart>& twin, const std::vec
                  GluedHex& out);
 /// The map after a planned gluing.
 QuadMap after_gluing(const QuadMap& m, const GluedHex& planned);
+/// The twins of the map after a planned gluing, from those before: the
+/// kept quads' darts renumbered, and only the darts on the hex's edges matched
+/// anew. Equal to twins(after_gluing(m, planned)) when that map runs no
+/// directed edge twice.
+std::vector<Dart> twins_after_gluing(const QuadMap& m, const std::vector<Dart>& twin, const GluedHex& planned);
+/// The degrees of the map after a planned gluing, from those before.
+std::vector<int> degrees_after_gluing(const QuadMap& m, const std::vector<int>& degree, const GluedHex& planned);
 /// plan_gluing, then `after` too.
 bool glue_hex(const QuadMap& m, const std::vector<Dart>& twin, const std::vector<int>& degree, Gluing g,
               GluedHex& out);
