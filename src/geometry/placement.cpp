@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <stdexcept>
 #include <string>
 
@@ -209,16 +210,22 @@ namespace {
 /// What moving one node at a time left tangled, moved all at once
 /// (untangle.hpp) and then shaped by phase 2, kept when better. The volume
 /// term helps some meshes and hinders graded ones, so both weights are tried:
-/// quadrangulation 16 90 untangles with lambda 0 only.
+/// quadrangulation 16 90 untangles with lambda 0 only. The two untangle at
+/// once, one on each core; what is kept is what trying them in turn keeps.
 void untangle_globally(HexMesh& mesh, const std::vector<bool>& fixed, Placer& placer, Summary& result,
                        PlacementReport& report) {
-  const std::vector<Vec3> local = mesh.points;
-  std::vector<Vec3> best = local;
-  for (double lambda : {0.0, 1.0}) {
-    mesh.points = local;
-    const UntangleReport r = untangle(mesh, fixed, {.lambda = lambda});
-    report.global_rounds += r.rounds;
-    if (r.inverted_after >= r.inverted_before) continue;
+  std::vector<Vec3> best = mesh.points;
+  HexMesh with_volume = mesh;
+  auto volume_run = std::async(std::launch::async, [&] { return untangle(with_volume, fixed, {.lambda = 1.0}); });
+  HexMesh shape_only = mesh;
+  const UntangleReport shape_report = untangle(shape_only, fixed, {.lambda = 0.0});
+  const UntangleReport volume_report = volume_run.get();
+  const std::pair<const HexMesh*, const UntangleReport*> tries[] = {{&shape_only, &shape_report},
+                                                                    {&with_volume, &volume_report}};
+  for (const auto& [untangled, r] : tries) {
+    report.global_rounds += r->rounds;
+    if (r->inverted_after >= r->inverted_before) continue;
+    mesh.points = untangled->points;
     report.quality_sweeps += placer.improve_worst();
     if (const Summary s = placer.summarise(); better(s, result)) {
       result = s;
