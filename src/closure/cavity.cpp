@@ -1,11 +1,11 @@
 #include "src/closure/cavity.hpp"
 
 #include <algorithm>
-#include <bit>
 
 #include <fmt/format.h>
 
 #include "src/closure/hex_meeting.hpp"
+#include "src/util/bits.hpp"
 
 namespace loom::closure {
 
@@ -116,7 +116,7 @@ bool touches_front_properly(const Hex& hex, const QuadMap& front, const QuadsAtV
             in_quad |= static_cast<std::uint8_t>(1u << i);
             in_hex |= static_cast<std::uint8_t>(1u << j);
           }
-      const int n = std::popcount(in_quad);
+      const int n = bits_set(in_quad);
       const bool quad_edge = in_quad == 0b0011 || in_quad == 0b0110 || in_quad == 0b1100 || in_quad == 0b1001;
       if (n >= 3 || (n == 2 && !(quad_edge && is_hex_edge(in_hex)))) ok = false;
     });

@@ -1,7 +1,8 @@
 #include "src/closure/hex_meeting.hpp"
 
 #include <algorithm>
-#include <bit>
+
+#include "src/util/bits.hpp"
 
 namespace loom::closure {
 
@@ -29,7 +30,7 @@ bool is_hex_face(std::uint8_t corners) { return std::find(kFaces.begin(), kFaces
 
 bool meets_as_glued(const Hex& glued, const Hex& other, const std::vector<const Quad*>& onto) {
   const std::uint8_t in_glued = shared_corners(glued, other);
-  const int n = std::popcount(in_glued);
+  const int n = bits_set(in_glued);
   if (n <= 1) return true;
   if (n != 2 && n != 4) return false;
   const std::uint8_t in_other = shared_corners(other, glued);

@@ -2,17 +2,17 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <chrono>
 #include <cmath>
 #include <unordered_map>
 #include <unordered_set>
 
-#include "src/closure/inherited_checks.hpp"
 #include "src/closure/hex_meeting.hpp"
+#include "src/closure/inherited_checks.hpp"
 #include "src/closure/irregularity.hpp"
 #include "src/quadmap/canonical.hpp"
 #include "src/quadmap/hex_glue.hpp"
+#include "src/util/bits.hpp"
 
 namespace loom::closure {
 
@@ -156,7 +156,7 @@ public:
       const int pass_least_k = pass == 0 ? least_k : 1;
       for (std::uint32_t q = 0; q < f.front.size(); ++q)
         for (std::uint8_t sides = 0; sides < 16; ++sides) {
-          if (std::popcount(static_cast<unsigned>(sides)) + 1 < pass_least_k) continue;
+          if (bits_set(sides) + 1 < pass_least_k) continue;
           if (known_plans.known(q, sides) && !known_plans.planned(q, sides)) {
             plans.record(q, sides, false);
             continue;
