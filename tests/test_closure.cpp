@@ -399,3 +399,21 @@ TEST_CASE("a closed weave with two cycles of hexes round one edge is cut back to
   CHECK(r.closure.woven > 200);
   CHECK(std::count(r.source.begin(), r.source.end(), HexSource::filled) == 0);
 }
+
+TEST_CASE("the closure search gives the same result whatever memory it may keep fronts in") {
+  // With a budget of a few fronts, nearly every parent front is dropped and
+  // rebuilt by replaying its gluings, without what its expansion had learnt.
+  for (std::uint64_t seed : {1, 2}) {
+    const Cavity cavity = surface_cavity(quadmap::from_surface(gen::randquad(200, seed)));
+    ClosureOptions roomy, tight;
+    roomy.limits.max_expansions = tight.limits.max_expansions = 1500;
+    tight.front_bytes = 64 << 10;
+    const ClosureResult a = close_cavity(cavity, nullptr, roomy), b = close_cavity(cavity, nullptr, tight);
+    CHECK(a.stats.expanded == 1500);
+    CHECK(a.stats.expanded == b.stats.expanded);
+    CHECK(a.stats.generated == b.stats.generated);
+    CHECK(a.hexes == b.hexes);
+    CHECK(a.left.front.quads == b.left.front.quads);
+    CHECK(a.left.owner == b.left.owner);
+  }
+}

@@ -25,6 +25,7 @@ class PlanMasks {
 public:
   explicit PlanMasks(std::size_t quads = 0) : masks_(quads, 0) {}
 
+  std::size_t bytes() const { return masks_.capacity() * sizeof(std::uint32_t); }
   bool known(std::uint32_t quad, unsigned sides) const { return masks_[quad] >> sides & 1; }
   bool planned(std::uint32_t quad, unsigned sides) const { return masks_[quad] >> (16 + sides) & 1; }
   void record(std::uint32_t quad, unsigned sides, bool planned) {
@@ -32,10 +33,12 @@ public:
   }
 
   /// What holds at the child front `child` of the front these masks are of,
-  /// made by the gluing `made_by` planned there.
+  /// made by the gluing `made_by` planned there (nothing, when these masks
+  /// are of no expansion).
   PlanMasks for_child(const quadmap::QuadMap& child, const std::vector<quadmap::Dart>& child_twin,
                       const QuadsAtVertex& child_at, const quadmap::GluedHex& made_by) const {
     PlanMasks out(child.size());
+    if (masks_.empty()) return out;  // a front rebuilt, not expanded: nothing learnt
     std::array<std::uint32_t, 5> covered = made_by.covered;
     std::sort(covered.begin(), covered.begin() + made_by.k);
     const auto covered_end = covered.cbegin() + made_by.k;
@@ -70,6 +73,7 @@ class GluingVerdicts {
 public:
   enum class Verdict : std::uint8_t { unknown, fits, does_not_fit };
 
+  std::size_t bytes() const { return (fit_.capacity() + unfit_.capacity()) * sizeof(std::uint64_t); }
   /// `covered_hash`: the exclusive or of the covered quads' hashes.
   void record(std::uint64_t covered_hash, bool fits) { (fits ? fit_ : unfit_).push_back(covered_hash); }
   /// Once every verdict is recorded.

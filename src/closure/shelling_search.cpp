@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "src/closure/front_store.hpp"
 #include "src/closure/hex_meeting.hpp"
 #include "src/closure/inherited_checks.hpp"
 #include "src/closure/irregularity.hpp"
@@ -99,10 +100,18 @@ public:
     quadmap::GluedHex made_by;  ///< the gluing that made it from its parent's front (none at the start)
     PlanMasks plans;            ///< of the gluings tried when it was expanded
     GluingVerdicts verdicts;
+
+    std::size_t bytes() const {
+      return sizeof(Front) + front.quads.capacity() * sizeof(Quad) +
+             (owner.capacity() + near.capacity() + twin.capacity() + degree.capacity()) * 4 + plans.bytes() +
+             verdicts.bytes();
+    }
   };
 
-  ShellSpace(const Cavity& cavity, const Database* db, std::size_t max_front, double irregularity_weight)
-      : cavity_(cavity), context_(cavity.hexes), db_(db), max_front_(max_front), weight_(irregularity_weight) {}
+  ShellSpace(const Cavity& cavity, const Database* db, std::size_t max_front, double irregularity_weight,
+             std::size_t front_bytes)
+      : cavity_(cavity), context_(cavity.hexes), db_(db), max_front_(max_front), fronts_(front_bytes),
+        weight_(irregularity_weight) {}
 
   State start() const {
     State s;
@@ -122,10 +131,12 @@ public:
   template <class Emit>
   void expand(const State& s, Emit&& emit) {
     Stopwatch clock;
-    expanded_.push_back(rebuild(s));
+    fronts_.keep_to_budget();
+    const Made made{s.parent, s.gluing, s.last};
+    const Front* parent = s.parent >= 0 ? &front_of(s.parent) : nullptr;
+    const auto index = fronts_.add(made, rebuild(parent, made));
+    Front& f = front_of(index);
     profile_.rebuild += clock.lap();
-    const auto index = static_cast<std::int32_t>(expanded_.size() - 1);
-    const Front& f = expanded_.back();
     if (f.front.size() <= canonical_limit) {
       const auto canon = quadmap::canonical_unoriented(f.front);
       profile_.canonical += clock.lap();
@@ -146,7 +157,6 @@ public:
     // and generating them all would be most of the work.
     const int least_k = f.front.size() > kLargeFront ? 3 : 1;
     std::size_t emitted = 0;
-    const Front* parent = s.parent >= 0 ? &expanded_[static_cast<std::size_t>(s.parent)] : nullptr;
     const PlanMasks known_plans =
         parent ? parent->plans.for_child(f.front, f.twin, at, f.made_by) : PlanMasks(f.front.size());
     PlanMasks plans(f.front.size());
@@ -194,22 +204,36 @@ public:
         }
     }
     verdicts.seal();
-    expanded_[static_cast<std::size_t>(index)].plans = std::move(plans);
-    expanded_[static_cast<std::size_t>(index)].verdicts = std::move(verdicts);
+    f.plans = std::move(plans);
+    f.verdicts = std::move(verdicts);
+    fronts_.recount(index);
     profile_.gluing += clock.lap();
   }
 
   const SearchProfile& profile() const { return profile_; }
 
-  /// The front of a state (the start, or one a gluing from an expanded state reaches).
-  Front rebuild(const State& s) const {
-    if (s.parent < 0) {
+  /// How an expanded state's front was made.
+  struct Made {
+    std::int32_t parent;
+    quadmap::Gluing gluing;
+    std::int32_t last;
+  };
+
+  /// The front of an expanded state, rebuilt if it was dropped.
+  Front& front_of(std::int32_t index) {
+    return fronts_.at(index, [this](const Front* parent, const Made& m) { return rebuild(parent, m); });
+  }
+
+  /// The front of a state: the start, or one a gluing from `parent`, an
+  /// expanded state's front, reaches.
+  Front rebuild(const Front* parent, const Made& s) const {
+    if (!parent) {
       Front f{cavity_.front, cavity_.owner, {}, {}, {}, {}, {}, {}};
       f.twin = quadmap::twins(f.front);
       f.degree = quadmap::degrees(f.front);
       return f;
     }
-    const Front& p = expanded_[static_cast<std::size_t>(s.parent)];
+    const Front& p = *parent;
     Front f;
     quadmap::GluedHex& glued = f.made_by;
     quadmap::plan_gluing(p.front, p.twin, p.degree, s.gluing, glued);
@@ -226,6 +250,11 @@ public:
         f.near.push_back(a);
     f.near.push_back(s.last);
     return f;
+  }
+
+  /// The front a state generated (not necessarily expanded) has.
+  Front front_after(const State& s) {
+    return rebuild(s.parent >= 0 ? &front_of(s.parent) : nullptr, {s.parent, s.gluing, s.last});
   }
 
   /// Arena indices of the hexes placed on the way to `s`, first placed first.
@@ -394,7 +423,7 @@ private:
   const Database* db_;
   std::size_t max_front_;
   std::vector<Placed> arena_;
-  std::vector<Front> expanded_;
+  FrontStore<Front, Made> fronts_;
   double weight_;
   std::unordered_map<std::uint64_t, double> expanded_codes_;  ///< canonical code hash -> least cost expanded at
   std::unordered_map<const Database::Entry*, std::vector<Hex>> templates_;  ///< replayed entries
@@ -407,7 +436,7 @@ private:
 
 ClosureResult close_cavity(const Cavity& cavity, const Database* db, const ClosureOptions& options) {
   ShellSpace space(cavity, db, cavity.front.size() + static_cast<std::size_t>(std::max(0, options.max_growth)),
-                   options.irregularity_weight);
+                   options.irregularity_weight, options.front_bytes);
   auto outcome = engine::best_first_search(space, space.start(), options.limits);
   ClosureResult r;
   r.stats = outcome.stats;
@@ -428,7 +457,7 @@ ClosureResult close_cavity(const Cavity& cavity, const Database* db, const Closu
     }
   r.vertex_bound = bound;
   if (!r.closed && end) {
-    const ShellSpace::Front f = space.rebuild(*end);
+    const ShellSpace::Front f = space.front_after(*end);
     r.left.front = f.front;
     r.left.front.vertex_bound = bound;
     for (std::int32_t o : f.owner)

@@ -34,6 +34,9 @@ struct ClosureOptions {
   /// hexes inverted on random quadrangulations but closes large cavities
   /// less often (docs/results.md), so 0 is the default everywhere.
   double irregularity_weight = 0;
+  /// Memory for the fronts of expanded states kept for their children
+  /// (front_store.hpp); the result does not depend on it, only the time.
+  std::size_t front_bytes = std::size_t{256} << 20;
 };
 
 /// Where a search's time went, in seconds.
