@@ -43,20 +43,6 @@ void HexesAtVertex::add(const Hex& hex, std::int32_t index) {
 
 const std::vector<std::int32_t>& HexesAtVertex::at(std::uint32_t v) const { return v < at_.size() ? at_[v] : none_; }
 
-QuadsAtVertex::QuadsAtVertex(const QuadMap& m) {
-  std::uint32_t bound = 0;
-  for (const Quad& q : m.quads)
-    for (std::uint32_t v : q) bound = std::max(bound, v + 1);
-  first_.assign(bound + 1, 0);
-  for (const Quad& q : m.quads)
-    for (std::uint32_t v : q) ++first_[v + 1];
-  for (std::uint32_t v = 0; v < bound; ++v) first_[v + 1] += first_[v];
-  quads_.resize(4 * m.size());
-  std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
-  for (std::uint32_t q = 0; q < m.size(); ++q)
-    for (std::uint32_t v : m.quads[q]) quads_[next[v]++] = q;
-}
-
 namespace {
 
 std::pair<std::uint32_t, std::uint32_t> unordered(std::uint32_t a, std::uint32_t b) { return {std::min(a, b), std::max(a, b)}; }

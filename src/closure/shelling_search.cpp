@@ -280,30 +280,11 @@ private:
   }
 
   /// The near hexes (arena indices) at each vertex, for one expansion.
-  class NearAtVertex {
-  public:
-    NearAtVertex(const std::vector<std::int32_t>& near, const std::vector<Placed>& arena) {
-      std::uint32_t bound = 0;
-      for (std::int32_t a : near)
-        for (std::uint32_t v : arena[static_cast<std::size_t>(a)].hex) bound = std::max(bound, v + 1);
-      first_.assign(bound + 1, 0);
-      for (std::int32_t a : near)
-        for (std::uint32_t v : arena[static_cast<std::size_t>(a)].hex) ++first_[v + 1];
-      for (std::uint32_t v = 0; v < bound; ++v) first_[v + 1] += first_[v];
-      hexes_.resize(8 * near.size());
-      std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
-      for (std::int32_t a : near)
-        for (std::uint32_t v : arena[static_cast<std::size_t>(a)].hex) hexes_[next[v]++] = a;
-    }
-    template <class F>
-    void each(std::uint32_t v, F&& f) const {
-      if (v + 1 >= first_.size()) return;
-      for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i) f(hexes_[i]);
-    }
-
-  private:
-    std::vector<std::uint32_t> first_;  ///< per vertex, where its hexes begin in hexes_
-    std::vector<std::int32_t> hexes_;
+  struct NearAtVertex : ByCorner<std::int32_t> {
+    NearAtVertex(const std::vector<std::int32_t>& near, const std::vector<Placed>& arena)
+        : ByCorner(
+              near.size(), [&](std::size_t i) -> const Hex& { return arena[static_cast<std::size_t>(near[i])].hex; },
+              [&](std::size_t i) { return near[i]; }) {}
   };
 
   /// Hexes round an edge before a gluing: the cavity's and the placed ones
