@@ -92,14 +92,19 @@ TEST_CASE("the database's own search gives an entry a smaller mesh where it find
   std::vector<Hex> pillowed{{8, 9, 10, 11, 12, 13, 14, 15}};
   for (const auto& f : faces)
     pillowed.push_back({outer[f[0]], outer[f[1]], outer[f[2]], outer[f[3]], 8u + f[0], 8u + f[1], 8u + f[2], 8u + f[3]});
+  REQUIRE(db.mesh(*db.find(cube)).size() == 1);
   db.replace(entry_of_mesh(cube, pillowed));
   REQUIRE(db.find(cube)->hexes() == 7);
+  // The replayed mesh kept for the entry follows the replacement.
+  CHECK(db.mesh(*db.find(cube)) == mesh_of(*db.find(cube)));
+  CHECK(db.mesh(*db.find(cube)).size() == 7);
 
   const DatabaseImprovement r = improve_by_search(db, ClosureOptions{});
   CHECK(r.searched == 1);
   CHECK(r.improved == 1);
   CHECK(r.hexes_saved == 6);
   CHECK(db.find(cube)->hexes() == 1);
+  CHECK(db.mesh(*db.find(cube)).size() == 1);
   CHECK(check_against(surface_of(quadmap::map_of_code(cube)), mesh_of(*db.find(cube))).combinatorial_valid());
   // Nothing is left to improve.
   CHECK(improve_by_search(db, ClosureOptions{}).improved == 0);

@@ -250,3 +250,40 @@ TEST_CASE("twins and degrees after a gluing, updated from before, are those of t
   CHECK(compared >= 60);
   CHECK(open_edges_matched > 0);
 }
+
+TEST_CASE("twins are found alike whether vertex ids are dense or sparse") {
+  std::mt19937 rng(7);
+  // Spread ids far apart: twins() then sorts instead of counting per vertex.
+  auto sparse = [](QuadMap m) {
+    for (Quad& q : m.quads)
+      for (Vertex& v : q) v = 1000 * v + 7;
+    m.vertex_bound = 1000 * m.vertex_bound + 7;
+    return m;
+  };
+  std::vector<QuadMap> maps{pseudo_double_wheel(6), pseudo_double_wheel(12), from_surface(gen::box(3, 2, 1))};
+  maps.push_back(scrambled(maps.back(), rng));
+  // Open, with an edge run twice, and with a quad run the wrong way.
+  QuadMap open = maps[1];
+  open.quads.pop_back();
+  QuadMap doubled = maps[2];
+  doubled.quads.push_back(doubled.quads[0]);
+  doubled.quads.push_back(doubled.quads[5]);
+  QuadMap flipped = maps[2];
+  std::reverse(flipped.quads[3].begin(), flipped.quads[3].end());
+  for (const QuadMap& m : {open, doubled, flipped}) maps.push_back(m);
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    CAPTURE(i);
+    Dart dense_duplicate = no_dart, sparse_duplicate = no_dart;
+    const auto dense = twins(maps[i], &dense_duplicate);
+    CHECK(dense == twins(sparse(maps[i]), &sparse_duplicate));
+    CHECK(dense_duplicate == sparse_duplicate);
+    CHECK((dense_duplicate != no_dart) == (i == 5 || i == 6));
+    // Each twin runs its dart backwards; a closed map pairs every dart.
+    for (Dart d = 0; d < dense.size(); ++d) {
+      if (dense[d] == no_dart) continue;
+      CHECK(maps[i].tail(dense[d]) == maps[i].head(d));
+      CHECK(maps[i].head(dense[d]) == maps[i].tail(d));
+    }
+    if (i < 4) CHECK(std::count(dense.begin(), dense.end(), no_dart) == 0);
+  }
+}

@@ -39,6 +39,8 @@ std::uint32_t above(const Hex& hex, std::uint32_t at, const Quad& bottom) {
 }  // namespace
 
 void Database::add(Entry e) {
+  replayed_.emplace_back();
+  meshes_.emplace_back();
   index_.emplace(e.code, static_cast<std::uint32_t>(entries_.size()));
   entries_.push_back(std::move(e));
 }
@@ -46,7 +48,15 @@ void Database::add(Entry e) {
 void Database::replace(Entry e) {
   auto it = index_.find(e.code);
   if (it == index_.end()) throw std::logic_error("database: replacing an entry it does not hold");
+  std::call_once(replayed_[it->second], [] {});
+  meshes_[it->second] = mesh_of(e);
   entries_[it->second] = std::move(e);
+}
+
+const std::vector<Hex>& Database::mesh(const Entry& e) const {
+  const auto i = static_cast<std::size_t>(&e - entries_.data());
+  std::call_once(replayed_[i], [&] { meshes_[i] = mesh_of(entries_[i]); });
+  return meshes_[i];
 }
 
 const Database::Entry* Database::find(const Code& code) const {
@@ -59,13 +69,16 @@ std::vector<Hex> mesh_of(const Database::Entry& e) {
   std::vector<Hex> hexes;
   quadmap::GluedHex glued;
   for (const quadmap::Gluing& g : e.shelling) {
+    // plan_gluing asks for a closed map; a corrupt file need not give one.
+    if (!quadmap::why_not_simple(front).empty())
+      throw std::logic_error("database: a front of the shelling is not a closed quad map");
     if (g.bottom >= front.size() || !quadmap::glue_hex(front, quadmap::twins(front), quadmap::degrees(front), g, glued))
       throw std::logic_error("database: a gluing of the shelling does not apply");
     hexes.push_back(glued.hex);
     front = std::move(glued.after);
   }
   Hex last;
-  if (!quadmap::fill_cube(front, quadmap::twins(front), last))
+  if (!quadmap::why_not_simple(front).empty() || !quadmap::fill_cube(front, quadmap::twins(front), last))
     throw std::logic_error("database: the shelling does not end in a cube");
   hexes.push_back(last);
   return hexes;

@@ -20,6 +20,8 @@
 // per entry: `entry Q H | code | b.s b.s ...`, Q boundary quads, H hexes, the
 // code's numbers, then per gluing its bottom quad and sides (0..15).
 #include <cstdint>
+#include <deque>
+#include <mutex>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -65,6 +67,10 @@ public:
   void save(const std::filesystem::path& file) const;
 
   const Entry* find(const quadmap::Code& code) const;
+  /// mesh_of one of this database's entries, replayed the first time it is
+  /// asked for (by any thread) and kept: a search asks for the same entries at
+  /// many fronts, and replaying all of them at load would take a second.
+  const std::vector<Hex>& mesh(const Entry& e) const;
   const std::vector<Entry>& entries() const { return entries_; }
   std::size_t size() const { return entries_.size(); }
   void add(Entry e);
@@ -74,6 +80,8 @@ public:
 
 private:
   std::vector<Entry> entries_;
+  mutable std::deque<std::once_flag> replayed_;  ///< per entry: its mesh is in meshes_
+  mutable std::vector<std::vector<Hex>> meshes_;
   std::unordered_map<quadmap::Code, std::uint32_t, quadmap::CodeHash> index_;
 };
 

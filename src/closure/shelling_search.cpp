@@ -355,9 +355,7 @@ private:
   void close_from_database(const State& s, const Front& f, const quadmap::Canonical& canon, Emit& emit) {
     const Database::Entry* entry = db_ ? db_->find(canon.code) : nullptr;
     if (!entry) return;
-    auto [cached, fresh] = templates_.try_emplace(entry);
-    if (fresh) cached->second = mesh_of(*entry);
-    const std::vector<Hex>& entry_hexes = cached->second;
+    const std::vector<Hex>& entry_hexes = db_->mesh(*entry);
     const std::uint32_t boundary_vertices = quadmap::map_of_code(entry->code).vertex_bound;
     const QuadMap read = canon.mirrored ? quadmap::mirrored(f.front) : f.front;
     const auto twin = quadmap::twins(read);
@@ -407,7 +405,6 @@ private:
   FrontStore<Front, Made> fronts_;
   double weight_;
   std::unordered_map<std::uint64_t, double> expanded_codes_;  ///< canonical code hash -> least cost expanded at
-  std::unordered_map<const Database::Entry*, std::vector<Hex>> templates_;  ///< replayed entries
   mutable std::vector<std::int32_t> checked_;
   mutable std::vector<const Quad*> onto_;
   SearchProfile profile_;

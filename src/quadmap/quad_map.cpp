@@ -11,15 +11,6 @@ namespace {
 
 std::uint64_t key(Vertex from, Vertex to) { return std::uint64_t(from) << 32 | to; }
 
-/// Directed edges with their darts, sorted by (tail, head).
-std::vector<std::pair<std::uint64_t, Dart>> sorted_darts(const QuadMap& m) {
-  std::vector<std::pair<std::uint64_t, Dart>> darts;
-  darts.reserve(4 * m.size());
-  for (Dart d = 0; d < 4 * m.size(); ++d) darts.emplace_back(key(m.tail(d), m.head(d)), d);
-  std::sort(darts.begin(), darts.end());
-  return darts;
-}
-
 /// Number of darts leaving `v` reached by turning round it from `start`; the
 /// whole ring when the quads round v form one cycle.
 std::size_t ring_length(const QuadMap& m, const std::vector<Dart>& twin, Dart start) {
@@ -32,17 +23,58 @@ std::size_t ring_length(const QuadMap& m, const std::vector<Dart>& twin, Dart st
   return n;
 }
 
-}  // namespace
-
-std::vector<Dart> twins(const QuadMap& m, Dart* duplicate) {
-  const auto darts = sorted_darts(m);
-  std::vector<Dart> twin(4 * m.size(), no_dart);
+/// twins() for maps whose vertex ids are sparse: darts sorted by (tail, head).
+std::vector<Dart> twins_by_sorting(const QuadMap& m, Dart* duplicate) {
+  std::vector<std::pair<std::uint64_t, Dart>> darts;
+  darts.reserve(4 * m.size());
+  for (Dart d = 0; d < 4 * m.size(); ++d) darts.emplace_back(key(m.tail(d), m.head(d)), d);
+  std::sort(darts.begin(), darts.end());
+  std::vector<Dart> twin(darts.size(), no_dart);
   for (std::size_t i = 0; i + 1 < darts.size(); ++i)
-    if (darts[i].first == darts[i + 1].first && duplicate) *duplicate = darts[i].second;
+    if (darts[i].first == darts[i + 1].first && (i == 0 || darts[i - 1].first != darts[i].first) && duplicate)
+      *duplicate = darts[i].second;
   for (const auto& [k, d] : darts) {
     const std::uint64_t back = key(static_cast<Vertex>(k & 0xffffffffu), static_cast<Vertex>(k >> 32));
     auto it = std::lower_bound(darts.begin(), darts.end(), std::make_pair(back, Dart{0}));
     if (it != darts.end() && it->first == back) twin[d] = it->second;
+  }
+  return twin;
+}
+
+}  // namespace
+
+std::vector<Dart> twins(const QuadMap& m, Dart* duplicate) {
+  const auto darts = static_cast<Dart>(4 * m.size());
+  std::uint64_t top = 0;
+  for (const Quad& q : m.quads)
+    for (Vertex v : q) top = std::max<std::uint64_t>(top, std::uint64_t{v} + 1);
+  if (top > 2 * std::uint64_t{darts} + 64) return twins_by_sorting(m, duplicate);
+  // The darts leaving each vertex, counted into place (ascending within a
+  // vertex): a dart's twin is among the few leaving its head.
+  std::vector<Dart> first(top + 1, 0), by_tail(darts);
+  for (Dart d = 0; d < darts; ++d) ++first[m.tail(d) + 1];
+  for (Vertex v = 0; v < top; ++v) first[v + 1] += first[v];
+  {
+    std::vector<Dart> next(first.begin(), first.end() - 1);
+    for (Dart d = 0; d < darts; ++d) by_tail[next[m.tail(d)]++] = d;
+  }
+  std::vector<Dart> twin(darts, no_dart);
+  std::uint64_t repeated = 0;  // the greatest (tail, head) run twice, plus one
+  for (Dart d = 0; d < darts; ++d) {
+    const Vertex t = m.tail(d), h = m.head(d);
+    for (Dart i = first[h]; i < first[h + 1]; ++i)
+      if (m.head(by_tail[i]) == t) {
+        twin[d] = by_tail[i];
+        break;
+      }
+    if (!duplicate) continue;
+    for (Dart i = first[t]; i < first[t + 1]; ++i) {
+      const Dart e = by_tail[i];
+      if (e != d && m.head(e) == h && key(t, h) + 1 > repeated) {
+        repeated = key(t, h) + 1;
+        *duplicate = std::min(d, e);
+      }
+    }
   }
   return twin;
 }
