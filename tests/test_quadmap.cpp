@@ -251,7 +251,7 @@ TEST_CASE("twins and degrees after a gluing, updated from before, are those of t
   CHECK(open_edges_matched > 0);
 }
 
-TEST_CASE("twins are found alike whether vertex ids are dense or sparse") {
+TEST_CASE("twins are found alike whether vertex ids are dense or sparse, and mirrored from the map's") {
   std::mt19937 rng(7);
   // Spread ids far apart: twins() then sorts instead of counting per vertex.
   auto sparse = [](QuadMap m) {
@@ -285,5 +285,6 @@ TEST_CASE("twins are found alike whether vertex ids are dense or sparse") {
       CHECK(maps[i].head(dense[d]) == maps[i].tail(d));
     }
     if (i < 4) CHECK(std::count(dense.begin(), dense.end(), no_dart) == 0);
+    if (i < 5) CHECK(mirrored_twins(dense) == twins(mirrored(maps[i])));
   }
 }

@@ -6,6 +6,7 @@
 
 #include "src/closure/hex_meeting.hpp"
 #include "src/util/bits.hpp"
+#include "src/util/corner_bits.hpp"
 
 namespace loom::closure {
 
@@ -45,27 +46,30 @@ const std::vector<std::int32_t>& HexesAtVertex::at(std::uint32_t v) const { retu
 
 namespace {
 
-std::pair<std::uint32_t, std::uint32_t> unordered(std::uint32_t a, std::uint32_t b) { return {std::min(a, b), std::max(a, b)}; }
-
-/// Whether quads `q` and `p` (distinct) are compatible in a proper map.
-bool compatible(const Quad& q, const Quad& p) {
-  // Every conflict needs two shared corners; most neighbours share one.
-  int shared = 0;
-  for (std::uint32_t a : q)
-    for (std::uint32_t b : p) shared += a == b;
-  if (shared < 2) return true;
-  const std::pair<std::uint32_t, std::uint32_t> dq[2] = {unordered(q[0], q[2]), unordered(q[1], q[3])};
-  const std::pair<std::uint32_t, std::uint32_t> dp[2] = {unordered(p[0], p[2]), unordered(p[1], p[3])};
-  for (int i = 0; i < 4; ++i) {
-    const std::uint32_t a = q[i], b = q[(i + 1) % 4];
-    for (int j = 0; j < 4; ++j) {
-      if (a == p[j] && b == p[(j + 1) % 4]) return false;  // a directed edge run twice: a repeated edge
-      if (unordered(p[j], p[(j + 1) % 4]) == dq[0] || unordered(p[j], p[(j + 1) % 4]) == dq[1]) return false;
-    }
-    const auto e = unordered(a, b);
-    if (e == dp[0] || e == dp[1]) return false;
+/// The corner a two-corner mask of a quad starts its edge at (0b0110: the
+/// edge from corner 1 to 2), or -1 when the two corners are opposite.
+int edge_start(std::uint8_t corners) {
+  switch (corners) {
+    case 0b0011: return 0;
+    case 0b0110: return 1;
+    case 0b1100: return 2;
+    case 0b1001: return 3;
+    default: return -1;
   }
-  return dq[0] != dp[0] && dq[0] != dp[1] && dq[1] != dp[0] && dq[1] != dp[1];
+}
+
+/// Whether quads `q` and `p` (distinct) are compatible in a proper map: they
+/// share at most one corner, or one edge, run the opposite way. Three shared
+/// corners include a diagonal of each, and a shared diagonal, or an edge of
+/// one that is a diagonal of the other, or an edge run the same way by both
+/// is what a proper map forbids.
+bool compatible(const Quad& q, const Quad& p) {
+  const std::uint8_t in_q = corners_among(q, p);
+  const int shared = bits_set(in_q);
+  if (shared < 2) return true;
+  if (shared > 2) return false;
+  const int i = edge_start(in_q), j = edge_start(corners_among(p, q));
+  return i >= 0 && j >= 0 && p[static_cast<std::size_t>(j)] == q[static_cast<std::size_t>((i + 1) % 4)];
 }
 
 }  // namespace
@@ -95,16 +99,11 @@ bool touches_front_properly(const Hex& hex, const QuadMap& front, const QuadsAtV
     at.each(v, [&](std::uint32_t q) {
       if (!ok || std::find(covered.begin(), covered.end(), q) != covered.end()) return;
       const Quad& quad = front.quads[q];
-      std::uint8_t in_quad = 0, in_hex = 0;
-      for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 8; ++j)
-          if (quad[static_cast<std::size_t>(i)] == hex[static_cast<std::size_t>(j)]) {
-            in_quad |= static_cast<std::uint8_t>(1u << i);
-            in_hex |= static_cast<std::uint8_t>(1u << j);
-          }
+      const std::uint8_t in_quad = corners_among(quad, hex);
       const int n = bits_set(in_quad);
+      if (n < 2) return;
       const bool quad_edge = in_quad == 0b0011 || in_quad == 0b0110 || in_quad == 0b1100 || in_quad == 0b1001;
-      if (n >= 3 || (n == 2 && !(quad_edge && is_hex_edge(in_hex)))) ok = false;
+      if (n >= 3 || !(quad_edge && is_hex_edge(corners_among(hex, quad)))) ok = false;
     });
   return ok;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "src/util/bits.hpp"
+#include "src/util/corner_bits.hpp"
 
 namespace loom::closure {
 
@@ -17,13 +18,7 @@ constexpr std::array<std::uint8_t, 6> kFaces = {0b00001111, 0b11110000, 0b001100
 
 }  // namespace
 
-std::uint8_t shared_corners(const Hex& a, const Hex& b) {
-  std::uint8_t bits = 0;
-  for (int i = 0; i < 8; ++i)
-    for (int j = 0; j < 8; ++j)
-      if (a[i] == b[j]) bits |= static_cast<std::uint8_t>(1u << i);
-  return bits;
-}
+std::uint8_t shared_corners(const Hex& a, const Hex& b) { return corners_among(a, b); }
 
 bool is_hex_edge(std::uint8_t corners) { return std::find(kEdges.begin(), kEdges.end(), corners) != kEdges.end(); }
 bool is_hex_face(std::uint8_t corners) { return std::find(kFaces.begin(), kFaces.end(), corners) != kFaces.end(); }

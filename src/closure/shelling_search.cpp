@@ -138,7 +138,7 @@ public:
     Front& f = front_of(index);
     profile_.rebuild += clock.lap();
     if (f.front.size() <= canonical_limit) {
-      const auto canon = quadmap::canonical_unoriented(f.front);
+      const auto canon = quadmap::canonical_unoriented(f.front, f.twin);
       profile_.canonical += clock.lap();
       auto [it, fresh] = expanded_codes_.try_emplace(quadmap::CodeHash{}(canon.code), cost(s));
       if (!fresh && it->second <= cost(s)) return;  // an isomorphic front was expanded no dearer
@@ -228,7 +228,9 @@ public:
   /// expanded state's front, reaches.
   Front rebuild(const Front* parent, const Made& s) const {
     if (!parent) {
-      Front f{cavity_.front, cavity_.owner, {}, {}, {}, {}, {}, {}};
+      Front f;
+      f.front = cavity_.front;
+      f.owner = cavity_.owner;
       f.twin = quadmap::twins(f.front);
       f.degree = quadmap::degrees(f.front);
       return f;
@@ -358,7 +360,7 @@ private:
     const std::vector<Hex>& entry_hexes = db_->mesh(*entry);
     const std::uint32_t boundary_vertices = quadmap::map_of_code(entry->code).vertex_bound;
     const QuadMap read = canon.mirrored ? quadmap::mirrored(f.front) : f.front;
-    const auto twin = quadmap::twins(read);
+    const auto twin = canon.mirrored ? quadmap::mirrored_twins(f.twin) : f.twin;
     for (quadmap::Dart start : canon.starts) {
       const auto label = quadmap::labels_from(read, twin, start);
       std::vector<std::uint32_t> vertex_of(boundary_vertices, quadmap::no_vertex);

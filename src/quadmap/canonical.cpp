@@ -102,9 +102,11 @@ Canonical canonical_oriented(const QuadMap& m, const std::vector<Dart>& twin) {
 
 Canonical canonical_oriented(const QuadMap& m) { return canonical_oriented(m, twins(m)); }
 
-Canonical canonical_unoriented(const QuadMap& m) {
-  Canonical own = canonical_oriented(m);
-  Canonical mirror = canonical_oriented(mirrored(m));
+Canonical canonical_unoriented(const QuadMap& m) { return canonical_unoriented(m, twins(m)); }
+
+Canonical canonical_unoriented(const QuadMap& m, const std::vector<Dart>& twin) {
+  Canonical own = canonical_oriented(m, twin);
+  Canonical mirror = canonical_oriented(mirrored(m), mirrored_twins(twin));
   if (mirror.code < own.code) {
     mirror.mirrored = true;
     return mirror;

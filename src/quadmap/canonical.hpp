@@ -51,6 +51,7 @@ Canonical canonical_oriented(const QuadMap& m, const std::vector<Dart>& twin);
 Canonical canonical_oriented(const QuadMap& m);
 /// Up to any isomorphism: the lesser of the map's code and its mirror image's.
 Canonical canonical_unoriented(const QuadMap& m);
+Canonical canonical_unoriented(const QuadMap& m, const std::vector<Dart>& twin);
 
 /// Canonical number of each vertex (index: vertex) when the code is read from
 /// `start`; vertices the reading never reaches stay no_vertex.

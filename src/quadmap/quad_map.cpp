@@ -178,6 +178,14 @@ QuadMap mirrored(const QuadMap& m) {
   return r;
 }
 
+std::vector<Dart> mirrored_twins(const std::vector<Dart>& twin) {
+  auto flip = [](Dart d) { return (d & ~3u) | (3u - (d & 3u)); };
+  std::vector<Dart> out(twin.size(), no_dart);
+  for (Dart d = 0; d < twin.size(); ++d)
+    if (const Dart t = twin[flip(d)]; t != no_dart) out[d] = flip(t);
+  return out;
+}
+
 QuadMap pseudo_double_wheel(int quads) {
   if (quads < 6 || quads % 2 != 0) throw std::logic_error("pseudo_double_wheel: needs an even count >= 6");
   const auto cycle = static_cast<Vertex>(quads);

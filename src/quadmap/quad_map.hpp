@@ -66,6 +66,9 @@ bool is_three_connected(const QuadMap& m);
 
 /// The same surface with its orientation reversed (each quad's corners read backwards).
 QuadMap mirrored(const QuadMap& m);
+/// twins(mirrored(m)) from twins(m): dart (q, k) of the mirror image runs
+/// dart (q, 3 - k) of m backwards.
+std::vector<Dart> mirrored_twins(const std::vector<Dart>& twin);
 
 /// Quads and vertices of the pseudo-double wheel with `quads` quads (even, >= 6):
 /// a cycle of `quads` vertices and two hubs, one joined to the even cycle
