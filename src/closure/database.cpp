@@ -84,6 +84,22 @@ std::vector<Hex> mesh_of(const Database::Entry& e) {
   return hexes;
 }
 
+std::vector<Hex> Database::mesh_on(const Entry& e, const QuadMap& read, const std::vector<quadmap::Dart>& twin,
+                                   quadmap::Dart start, bool mirrored) const {
+  const std::uint32_t boundary_vertices = quadmap::map_of_code(e.code).vertex_bound;
+  const auto label = quadmap::labels_from(read, twin, start);
+  std::vector<std::uint32_t> vertex_of(boundary_vertices, quadmap::no_vertex);
+  for (std::uint32_t v = 0; v < label.size(); ++v)
+    if (label[v] != quadmap::no_vertex) vertex_of[label[v]] = v;
+  std::vector<Hex> hexes;
+  for (Hex h : mesh(e)) {
+    for (auto& v : h) v = v < boundary_vertices ? vertex_of[v] : read.vertex_bound + (v - boundary_vertices);
+    // Read in the mirror image, a hex is left-handed; top and bottom swapped, it is right-handed again.
+    hexes.push_back(mirrored ? Hex{h[4], h[5], h[6], h[7], h[0], h[1], h[2], h[3]} : h);
+  }
+  return hexes;
+}
+
 Database::Entry entry_of_mesh(const Code& code, const std::vector<Hex>& hexes) {
   Database::Entry e{code, {}};
   QuadMap front = front_of(code, hexes);

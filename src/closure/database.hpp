@@ -71,6 +71,12 @@ public:
   /// asked for (by any thread) and kept: a search asks for the same entries at
   /// many fronts, and replaying all of them at load would take a second.
   const std::vector<Hex>& mesh(const Entry& e) const;
+  /// mesh(e) on a front of e's boundary: `read` is the front as its canonical
+  /// code reads it (mirrored when the code is its mirror image's), `start`
+  /// one of the code's start darts. Boundary vertices are named as the front
+  /// names them, inner ones numbered from read.vertex_bound on.
+  std::vector<Hex> mesh_on(const Entry& e, const quadmap::QuadMap& read, const std::vector<quadmap::Dart>& twin,
+                           quadmap::Dart start, bool mirrored) const;
   const std::vector<Entry>& entries() const { return entries_; }
   std::size_t size() const { return entries_.size(); }
   void add(Entry e);

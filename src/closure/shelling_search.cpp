@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <unordered_map>
 #include <unordered_set>
@@ -14,40 +13,14 @@
 #include "src/quadmap/canonical.hpp"
 #include "src/quadmap/hex_glue.hpp"
 #include "src/util/bits.hpp"
+#include "src/util/stopwatch.hpp"
 
 namespace loom::closure {
 
 using quadmap::Code;
 using quadmap::QuadMap;
 
-const char* source_name(HexSource s) {
-  switch (s) {
-    case HexSource::woven: return "woven";
-    case HexSource::searched: return "searched";
-    case HexSource::database: return "database";
-    case HexSource::filled: return "filled";
-    case HexSource::pillow: return "pillow";
-  }
-  return "?";
-}
-
 namespace {
-
-class Stopwatch {
-public:
-  /// Seconds since the last lap (or since made).
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
-private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
-
-Hex mirror_hex(const Hex& h) { return {h[4], h[5], h[6], h[7], h[0], h[1], h[2], h[3]}; }
 
 /// A hash of a quad as a set of corners: a front's key is the exclusive or of
 /// its quads' (so a gluing updates it in O(k)).
@@ -357,20 +330,10 @@ private:
   void close_from_database(const State& s, const Front& f, const quadmap::Canonical& canon, Emit& emit) {
     const Database::Entry* entry = db_ ? db_->find(canon.code) : nullptr;
     if (!entry) return;
-    const std::vector<Hex>& entry_hexes = db_->mesh(*entry);
-    const std::uint32_t boundary_vertices = quadmap::map_of_code(entry->code).vertex_bound;
     const QuadMap read = canon.mirrored ? quadmap::mirrored(f.front) : f.front;
     const auto twin = canon.mirrored ? quadmap::mirrored_twins(f.twin) : f.twin;
     for (quadmap::Dart start : canon.starts) {
-      const auto label = quadmap::labels_from(read, twin, start);
-      std::vector<std::uint32_t> vertex_of(boundary_vertices, quadmap::no_vertex);
-      for (std::uint32_t v = 0; v < label.size(); ++v)
-        if (label[v] != quadmap::no_vertex) vertex_of[label[v]] = v;
-      std::vector<Hex> hexes;
-      for (Hex h : entry_hexes) {
-        for (auto& v : h) v = v < boundary_vertices ? vertex_of[v] : f.front.vertex_bound + (v - boundary_vertices);
-        hexes.push_back(canon.mirrored ? mirror_hex(h) : h);
-      }
+      const std::vector<Hex> hexes = db_->mesh_on(*entry, read, twin, start, canon.mirrored);
       std::int32_t last = s.last;
       const std::size_t mark = arena_.size();
       bool ok = true;

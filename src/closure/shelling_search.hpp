@@ -15,12 +15,9 @@
 #include "engine/search.hpp"
 #include "src/closure/cavity.hpp"
 #include "src/closure/database.hpp"
+#include "src/closure/hex_source.hpp"
 
 namespace loom::closure {
-
-/// Where a hex of a closed mesh came from (reported per hex, docs/closure.md).
-enum class HexSource : std::uint8_t { woven, searched, database, filled, pillow };
-const char* source_name(HexSource s);
 
 struct ClosureOptions {
   /// Budgets are in expansions, so that a result never depends on the
