@@ -58,11 +58,11 @@ int edge_start(std::uint8_t corners) {
   }
 }
 
-/// Whether quads `q` and `p` (distinct) are compatible in a proper map: they
-/// share at most one corner, or one edge, run the opposite way. Three shared
-/// corners include a diagonal of each, and a shared diagonal, or an edge of
-/// one that is a diagonal of the other, or an edge run the same way by both
-/// is what a proper map forbids.
+/// Whether quads `q` and `p` (distinct) can both be in a proper map, which
+/// forbids a shared diagonal, an edge of one that is a diagonal of the other,
+/// and an edge run the same way by both. So they can when they share at most
+/// one corner, or two that are an edge of both, run opposite ways; any three
+/// corners of q hold one of its diagonals.
 bool compatible(const Quad& q, const Quad& p) {
   const std::uint8_t in_q = corners_among(q, p);
   const int shared = bits_set(in_q);

@@ -48,13 +48,15 @@ void Database::add(Entry e) {
 void Database::replace(Entry e) {
   auto it = index_.find(e.code);
   if (it == index_.end()) throw std::logic_error("database: replacing an entry it does not hold");
+  std::vector<Hex> hexes = mesh_of(e);  // before anything changes: it throws on a corrupt entry
   std::call_once(replayed_[it->second], [] {});
-  meshes_[it->second] = mesh_of(e);
+  meshes_[it->second] = std::move(hexes);
   entries_[it->second] = std::move(e);
 }
 
 const std::vector<Hex>& Database::mesh(const Entry& e) const {
   const auto i = static_cast<std::size_t>(&e - entries_.data());
+  if (&e < entries_.data() || i >= entries_.size()) throw std::logic_error("database: mesh() of another database's entry");
   std::call_once(replayed_[i], [&] { meshes_[i] = mesh_of(entries_[i]); });
   return meshes_[i];
 }

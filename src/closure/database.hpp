@@ -21,9 +21,9 @@
 // code's numbers, then per gluing its bottom quad and sides (0..15).
 #include <cstdint>
 #include <deque>
-#include <mutex>
 #include <filesystem>
 #include <functional>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <unordered_map>
