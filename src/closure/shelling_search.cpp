@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "src/closure/front_key.hpp"
 #include "src/closure/front_store.hpp"
 #include "src/closure/hex_meeting.hpp"
 #include "src/closure/inherited_checks.hpp"
@@ -17,23 +18,9 @@
 
 namespace loom::closure {
 
-using quadmap::Code;
 using quadmap::QuadMap;
 
 namespace {
-
-/// A hash of a quad as a set of corners: a front's key is the exclusive or of
-/// its quads' (so a gluing updates it in O(k)).
-std::uint64_t quad_hash(const Quad& q) {
-  Quad s = q;
-  std::sort(s.begin(), s.end());
-  std::uint64_t h = 0x9E3779B97F4A7C15ull;
-  for (std::uint32_t v : s) {
-    h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    h *= 0xBF58476D1CE4E5B9ull;
-  }
-  return h ^ (h >> 31);
-}
 
 class ShellSpace {
 public:
