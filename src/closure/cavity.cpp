@@ -102,8 +102,7 @@ bool touches_front_properly(const Hex& hex, const QuadMap& front, const QuadsAtV
       const std::uint8_t in_quad = corners_among(quad, hex);
       const int n = bits_set(in_quad);
       if (n < 2) return;
-      const bool quad_edge = in_quad == 0b0011 || in_quad == 0b0110 || in_quad == 0b1100 || in_quad == 0b1001;
-      if (n >= 3 || !(quad_edge && is_hex_edge(corners_among(hex, quad)))) ok = false;
+      if (n >= 3 || edge_start(in_quad) < 0 || !is_hex_edge(corners_among(hex, quad))) ok = false;
     });
   return ok;
 }

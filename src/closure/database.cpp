@@ -96,8 +96,7 @@ std::vector<Hex> Database::mesh_on(const Entry& e, const QuadMap& read, const st
   std::vector<Hex> hexes;
   for (Hex h : mesh(e)) {
     for (auto& v : h) v = v < boundary_vertices ? vertex_of[v] : read.vertex_bound + (v - boundary_vertices);
-    // Read in the mirror image, a hex is left-handed; top and bottom swapped, it is right-handed again.
-    hexes.push_back(mirrored ? Hex{h[4], h[5], h[6], h[7], h[0], h[1], h[2], h[3]} : h);
+    hexes.push_back(mirrored ? mirror_hex(h) : h);
   }
   return hexes;
 }

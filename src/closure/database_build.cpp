@@ -25,8 +25,6 @@ struct MeshEntry {
   std::uint32_t boundary_vertices = 0;
 };
 
-Hex mirror_hex(const Hex& h) { return {h[4], h[5], h[6], h[7], h[0], h[1], h[2], h[3]}; }
-
 /// The entry for a mesh whose boundary, facing out of the mesh, is `outward`.
 MeshEntry entry_of(const QuadMap& outward, const std::vector<Hex>& hexes) {
   const auto canon = quadmap::canonical_unoriented(outward);

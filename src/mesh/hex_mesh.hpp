@@ -18,4 +18,8 @@ struct HexMesh {
   std::vector<Hex> hexes;
 };
 
+/// The same hex with its two faces 0-3 and 4-7 swapped: a hex read in a
+/// mirror image is left-handed, and this makes it right-handed again.
+inline Hex mirror_hex(const Hex& h) { return {h[4], h[5], h[6], h[7], h[0], h[1], h[2], h[3]}; }
+
 }  // namespace loom

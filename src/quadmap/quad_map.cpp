@@ -1,9 +1,12 @@
 #include "src/quadmap/quad_map.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "src/util/by_corner.hpp"
 
 namespace loom::quadmap {
 
@@ -49,32 +52,24 @@ std::vector<Dart> twins(const QuadMap& m, Dart* duplicate) {
   for (const Quad& q : m.quads)
     for (Vertex v : q) top = std::max<std::uint64_t>(top, std::uint64_t{v} + 1);
   if (top > 2 * std::uint64_t{darts} + 64) return twins_by_sorting(m, duplicate);
-  // The darts leaving each vertex, counted into place (ascending within a
-  // vertex): a dart's twin is among the few leaving its head.
-  std::vector<Dart> first(top + 1, 0), by_tail(darts);
-  for (Dart d = 0; d < darts; ++d) ++first[m.tail(d) + 1];
-  for (Vertex v = 0; v < top; ++v) first[v + 1] += first[v];
-  {
-    std::vector<Dart> next(first.begin(), first.end() - 1);
-    for (Dart d = 0; d < darts; ++d) by_tail[next[m.tail(d)]++] = d;
-  }
+  // A dart's twin is among the few darts leaving its head (ascending there).
+  const ByCorner<Dart> leaving(
+      darts, [&m](std::size_t d) { return std::array<Vertex, 1>{m.tail(static_cast<Dart>(d))}; },
+      [](std::size_t d) { return static_cast<Dart>(d); });
   std::vector<Dart> twin(darts, no_dart);
   std::uint64_t repeated = 0;  // the greatest (tail, head) run twice, plus one
   for (Dart d = 0; d < darts; ++d) {
     const Vertex t = m.tail(d), h = m.head(d);
-    for (Dart i = first[h]; i < first[h + 1]; ++i)
-      if (m.head(by_tail[i]) == t) {
-        twin[d] = by_tail[i];
-        break;
-      }
+    leaving.each(h, [&](Dart e) {
+      if (twin[d] == no_dart && m.head(e) == t) twin[d] = e;
+    });
     if (!duplicate) continue;
-    for (Dart i = first[t]; i < first[t + 1]; ++i) {
-      const Dart e = by_tail[i];
+    leaving.each(t, [&](Dart e) {
       if (e != d && m.head(e) == h && key(t, h) + 1 > repeated) {
         repeated = key(t, h) + 1;
         *duplicate = std::min(d, e);
       }
-    }
+    });
   }
   return twin;
 }

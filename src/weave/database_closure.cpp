@@ -143,7 +143,7 @@ public:
       layer = std::max(layer, g_.get(f, ids_.face_layer) + 1);
     }
     if (needs_mirroring(p, hexes))
-      for (Hex& h : hexes) h = {h[4], h[5], h[6], h[7], h[0], h[1], h[2], h[3]};
+      for (Hex& h : hexes) h = mirror_hex(h);
     std::vector<Hex> corners;
     for (const Hex& h : hexes) {
       Hex c;
