@@ -1,8 +1,8 @@
 // bench_closure: closure in figures, from whole surfaces.
 //
 //   bench_closure [--quads A-B] [--randquad LIST] [--seeds N] [--shapes]
-//                 [--pipeline [--prefer quality|fewest-hexes]] [--expansions N] [--weight W]
-//                 [--irregularity W] [--database FILE]
+//                 [--pipeline [--prefer quality|fewest-hexes] [--strategy S]] [--rules DIR]
+//                 [--expansions N] [--weight W] [--irregularity W] [--database FILE]
 //                 [--shard K/N] [--csv FILE [--resume]]
 //   bench_closure --merge A.csv B.csv ...
 //
@@ -16,7 +16,8 @@
 // hexes, expansions and states a second, and where the time went. With
 // --pipeline it runs what `loom weave` does by default (the shipped rules, 16
 // attempts, cavity closure, the whole-surface fill last) and says which stage
-// made each mesh (--prefer: which of two meshes it keeps). --shard K/N runs inputs K-1, K-1+N, ...; --csv writes one
+// made each mesh (--prefer: which of two meshes it keeps; --rules and
+// --strategy as for loom weave, the database and fill caps following --rules). --shard K/N runs inputs K-1, K-1+N, ...; --csv writes one
 // row per input (--resume: after the rows FILE already has, the inputs it
 // lacks); --merge sums shard CSVs. Figures, not a test: the machine is
 // shared, compare within a run.
@@ -172,8 +173,7 @@ void print_summary(const std::vector<Outcome>& all, bool pipeline) {
 
 int main(int argc, char** argv) {
   CLI::App app("Closure in figures: the search alone, or loom weave's whole pipeline, from whole surfaces");
-  std::string quads = "6-16", randquads, database = closure::database_file(weave::default_rules_dir()).string(), shard,
-              csv;
+  std::string quads = "6-16", randquads, database, shard, csv;
   std::vector<std::string> merge;
   int seeds = 3;
   bool shapes = false, pipeline = false, resume = false;
@@ -183,6 +183,12 @@ int main(int argc, char** argv) {
   app.add_option("--seeds", seeds, "random quadrangulations per F: seeds 1..N (default 3)");
   app.add_flag("--shapes", shapes, "Schneiders' pyramid and the spindle, each also renumbered three ways");
   app.add_flag("--pipeline", pipeline, "run loom weave's defaults (weave, cavity closure, fill) instead of the search alone");
+  std::string rules_dir = weave::default_rules_dir().string(), strategy;
+  app.add_option("--rules", rules_dir,
+                 "with --pipeline, as loom weave --rules: the rules, and the database and fill caps they bring "
+                 "(default: the shipped rules/)");
+  app.add_option("--strategy", strategy,
+                 "with --pipeline, as loom weave --strategy (default: the rules' strategies/default.strategy, else priority)");
   app.add_option("--expansions", options.limits.max_expansions, "search budget per cavity (default 4000)");
   app.add_option("--weight", options.limits.weight, "weight of the search's estimate (default 20)");
   app.add_option("--irregularity", options.irregularity_weight,
@@ -195,13 +201,14 @@ int main(int argc, char** argv) {
                                                                               {"fewest-hexes", pipeline::Prefer::fewest_hexes}},
                                              CLI::ignore_case));
   app.add_option("--growth", options.max_growth, "fronts larger than the start by more than this are not explored (default 8)");
-  app.add_option("--database", database, "database file ('' for none)");
+  auto* database_option = app.add_option("--database", database, "database file ('' for none; default: the rules')");
   app.add_option("--shard", shard, "run only inputs K-1, K-1+N, ... (K/N)");
   auto* csv_option = app.add_option("--csv", csv, "write one row per input");
   app.add_option("--merge", merge, "sum these CSVs instead of running");
   app.add_flag("--resume", resume, "keep the rows --csv already has, run only the inputs it lacks, and add theirs")
       ->needs(csv_option);
   loom::bench::parse_or_exit(app, argc, argv);
+  if (!database_option->count()) database = pipeline::default_meshing_options(rules_dir).database.string();
 
   std::vector<Outcome> outcomes;
   auto read_rows = [&outcomes](const std::string& file) {
@@ -249,7 +256,9 @@ int main(int argc, char** argv) {
 
   closure::Database db;
   if (!database.empty()) db = closure::Database::load(database);
-  const auto rules = engine::load_rule_dir(weave::default_rules_dir(), *stc::StcSchema::get().schema);
+  const auto rules = engine::load_rule_dir(rules_dir, *stc::StcSchema::get().schema);
+  const engine::Strategy weave_strategy = strategy.empty() ? weave::strategy_of(rules_dir) : weave::strategy_named(strategy);
+  engine::check_strategy(weave_strategy, rules, weave::strategy_measures());
   std::cerr << fmt::format("{} inputs; database {} boundaries; budget {} expansions, weight {}\n", inputs.size(), db.size(),
                            options.limits.max_expansions, options.limits.weight);
   // A run stopped halfway (a session's end, a node's time limit) goes on where it stopped.
@@ -269,7 +278,8 @@ int main(int argc, char** argv) {
     Outcome o;
     o.input = in.name, o.group = in.group, o.quads = in.surface.quads.size();
     if (pipeline) {
-      pipeline::MeshingOptions m = pipeline::default_meshing_options();
+      pipeline::MeshingOptions m = pipeline::default_meshing_options(rules_dir);
+      m.weave.strategy = weave_strategy;
       m.database = database;
       m.search = options;
       m.prefer = prefer;

@@ -8,11 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include "src/check/validity.hpp"
+#include "src/closure/database.hpp"
+#include "src/fill/cap.hpp"
 #include "src/fill/fill.hpp"
 #include "src/fill/fill_plan.hpp"
 #include "src/gen/generators.hpp"
 #include "src/geometry/boundary_layer.hpp"
 #include "src/io/hex_io.hpp"
+#include "src/pipeline/mesh_surface.hpp"
 #include "src/util/error.hpp"
 #include "src/weave/weave.hpp"
 #include "tests/support.hpp"
@@ -157,4 +160,33 @@ TEST_CASE("loom weave closes what no weave closes; --closure none (or --no-fill)
     CHECK_FALSE(std::filesystem::exists(dir / "out.vtk"));
   }
   CHECK(loom::test::run_cli(args + " --closure sometimes").status == 2);
+}
+
+TEST_CASE("a rules directory brings its own closure database and fill caps, or none") {
+  const auto shipped = pipeline::default_meshing_options(weave::default_rules_dir());
+  CHECK(shipped.database == closure::database_file(weave::default_rules_dir()));
+  CHECK(shipped.fill_caps == fill::default_caps_dir());
+
+  loom::test::ScratchDir dir("rulesdb");
+  std::filesystem::create_directory(dir / "rules");
+  std::filesystem::copy_file(weave::default_rules_dir() / "cross.rule", dir / "rules" / "cross.rule");
+  const auto bare = pipeline::default_meshing_options(dir / "rules");
+  CHECK(bare.database.empty());
+  CHECK(bare.fill_caps.empty());
+
+  // Crossing alone never closes the box: what closes it is the search, with
+  // the database only where the rules directory has one.
+  REQUIRE(loom::test::run_cli("gen box 2 2 2 -o " + (dir / "box.obj").string()).status == 0);
+  const std::string args = "weave " + (dir / "box.obj").string() + " -o " + (dir / "out.vtk").string() +
+                           " --attempts 1 --rules " + (dir / "rules").string() + " --report " + (dir / "r.json").string();
+  auto r = loom::test::run_cli(args);
+  CHECK_MESSAGE((r.status == 0 || r.status == 3), r.err);
+  auto j = nlohmann::json::parse(std::ifstream(dir / "r.json"));
+  CHECK(j["hex_sources"]["database"] == 0);
+  CHECK(j["hex_sources"]["searched"].get<int>() > 0);
+
+  std::filesystem::copy(weave::default_rules_dir() / "closure", dir / "rules" / "closure");
+  const auto with_database = pipeline::default_meshing_options(dir / "rules");
+  CHECK(with_database.database == closure::database_file(dir / "rules"));
+  CHECK(with_database.fill_caps.empty());
 }

@@ -109,8 +109,9 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
   if (o.dot_steps && o.dot_dir.empty()) throw loom::InputError("--dot-steps needs --dot DIR to write into");
   loom::hex_format_of(o.output);  // an unwritable format is refused before any work
   // Rules and strategy before the surface: a broken file is refused before Gmsh's meshing.
-  auto rules = load_rules(o.rules.empty() ? loom::weave::default_rules_dir().string() : o.rules);
-  loom::pipeline::MeshingOptions options = loom::pipeline::default_meshing_options();
+  const std::filesystem::path rules_dir = o.rules.empty() ? loom::weave::default_rules_dir() : std::filesystem::path(o.rules);
+  auto rules = load_rules(rules_dir.string());
+  loom::pipeline::MeshingOptions options = loom::pipeline::default_meshing_options(rules_dir);
   options.weave.strategy = parse_strategy(o, rules);
   options.weave.check_rules = checked_rules(o, rules);
   RunBudget budget(o.max_seconds, o.max_memory, o.progress);
@@ -274,7 +275,7 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
 
 void add_weave_options(CLI::App& app, WeaveCommandOptions& o) {
   app.add_option("-o,--output", o.output, "hex mesh to write (.vtk .vtu .msh .exo .e)")->required();
-  app.add_option("--rules", o.rules, "directory of *.rule files (default: the shipped rules/)");
+  app.add_option("--rules", o.rules, "directory of *.rule files, and of the closure database and fill caps the run may use (closure/, fill/; default: the shipped rules/)");
   app.add_option("--strategy", o.strategy, "a strategy file (default: the rules' strategies/default.strategy, else priority), priority, random or sequence:RULE,RULE...");
   app.add_option("--check-rules", o.check_rules,
                  "check the STC invariants after every application of these rules (names, or 'all'); a violation "

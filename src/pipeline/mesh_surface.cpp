@@ -181,6 +181,10 @@ void search_symmetric_pairs(MeshingResult& r, const QuadSurface& surface, Resour
 }
 
 void fill_whole_surface(MeshingResult& r, const QuadSurface& surface, Resources& res) {
+  if (res.caps().empty()) {
+    r.fill_failure = "it has no caps: the rules directory has no fill/ (the shipped rules/fill has them)";
+    return;
+  }
   try {
     fill::FilledMesh f = fill::fill_constructively(surface, res.caps());
     Candidate c;
@@ -217,12 +221,12 @@ closure::ClosureOptions wide_search_defaults() {
   return wide;
 }
 
-MeshingOptions default_meshing_options() {
+MeshingOptions default_meshing_options(const std::filesystem::path& rules_dir) {
   MeshingOptions o;
   o.attempts = 16;
   o.closure = Closure::full;
-  o.database = closure::database_file(weave::default_rules_dir());
-  o.fill_caps = fill::default_caps_dir();
+  if (std::filesystem::exists(closure::database_file(rules_dir))) o.database = closure::database_file(rules_dir);
+  if (std::filesystem::is_directory(rules_dir / "fill")) o.fill_caps = rules_dir / "fill";
   return o;
 }
 

@@ -141,9 +141,11 @@ struct MeshingResult {
   bool filled() const { return made_by == "filled"; }
 };
 
-/// What `loom weave` runs with no options: 16 attempts, Closure::full, the
-/// shipped database and fill caps, Prefer::quality.
-MeshingOptions default_meshing_options();
+/// What `loom weave` runs with no options: 16 attempts, Closure::full,
+/// Prefer::quality, and the closure database and fill caps of `rules_dir`
+/// (closure/database.txt, fill/), or none where it has none: a rules
+/// directory brings its own, as a copy of the shipped rules/ does.
+MeshingOptions default_meshing_options(const std::filesystem::path& rules_dir = weave::default_rules_dir());
 
 /// Weaves a validated, outward-oriented surface with `rules`, then closes or
 /// fills as MeshingOptions::closure allows. A rule that fails while it runs
