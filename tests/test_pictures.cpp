@@ -77,6 +77,31 @@ TEST_CASE("--no-svg writes the DOT files only; the trace holds every step before
   CHECK_FALSE(std::filesystem::exists(dir / "out2.vtk"));
 }
 
+TEST_CASE("--dot draws the mesh written, closure's and the layer's hexes included; with no mesh, the weave's state") {
+  ScratchDir dir("dotmesh");
+  auto hexes_drawn = [&](const std::filesystem::path& dot) {
+    const std::string text = test::slurp(dot);
+    std::size_t n = 0;
+    for (std::size_t at = text.find("[label=\"hex "); at != std::string::npos; at = text.find("[label=\"hex ", at + 1)) ++n;
+    return n;
+  };
+  // The spindle: 44 hexes from the database and an 8-hex layer, none woven.
+  REQUIRE(run_cli("gen spindle -o " + (dir / "s.obj").string()).status == 0);
+  auto r = run_cli("weave " + (dir / "s.obj").string() + " -o " + (dir / "s.vtk").string() +
+                   " --prefer fewest-hexes --no-svg --dot " + (dir / "dot").string() + " --partial");
+  REQUIRE(r.status == 0);
+  CHECK(r.out.rfind("closed: 52 hexes = 0 woven", 0) == 0);
+  CHECK(hexes_drawn(dir / "dot" / "stc.dot") == 52);
+  // --partial still draws the weave's own state, which is not the mesh.
+  CHECK(hexes_drawn(dir / "s.partial" / "stc.dot") != 52);
+
+  r = run_cli("weave " + (dir / "s.obj").string() + " -o " + (dir / "t.vtk").string() +
+              " --closure none --no-svg --dot " + (dir / "open").string());
+  CHECK(r.status == 1);
+  CHECK(std::filesystem::exists(dir / "open" / "stc.dot"));
+  CHECK(hexes_drawn(dir / "open" / "stc.dot") < 52);
+}
+
 TEST_CASE("step pictures: DOT files as the weave goes, SVGs only when rendered, none of an attempt cleared") {
   // Drawing is what made `--dot-steps` slow (randquad 20 seed 2: 16 attempts,
   // over 40 minutes): only the attempt kept is drawn, once the weave is over.

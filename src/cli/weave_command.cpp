@@ -22,6 +22,7 @@
 #include "src/geometry/inversion_causes.hpp"
 #include "src/io/hex_io.hpp"
 #include "src/io/mesh_format.hpp"
+#include "src/stc/build.hpp"
 #include "src/stc/primal.hpp"
 #include "src/stc/sheet_diagram.hpp"
 #include "src/util/atomic_file.hpp"
@@ -184,7 +185,12 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
                                 report_json(o.input, {bound, loom::surface_half_thickness(surface)}, result).dump(2) + "\n");
   loom::stc::PictureFailures pictures = steps ? steps->picture_failures() : loom::stc::PictureFailures{};
   const std::size_t svg_limit = o.no_svg ? 0 : 4000;
-  if (!o.dot_dir.empty()) loom::stc::write_stc_dot(result.stc, o.dot_dir, pictures, svg_limit);
+  // --dot draws the mesh that is written (the dual of all its hexes, closure's
+  // and the boundary layer's included); with no mesh, the weave's last state,
+  // which shows where it stopped (--partial draws that state beside a mesh).
+  if (!o.dot_dir.empty())
+    loom::stc::write_stc_dot(result.combinatorially_valid() ? loom::stc::build_from_hex_mesh(*result.mesh) : result.stc,
+                             o.dot_dir, pictures, svg_limit);
   // The weave's partial state, also when the fill then meshed the surface.
   if (o.partial && !result.weave.closed) write_partial(o.output, result.stc, pictures, svg_limit);
   if (pictures.count) std::cerr << pictures.warning() << "\n";
@@ -286,7 +292,7 @@ void add_weave_options(CLI::App& app, WeaveCommandOptions& o) {
                  "weaves to try: when one gives no valid mesh, weave again with the random strategy, seeds 1, 2, ... "
                  "(default 16; 1: only the strategy given)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
-  app.add_option("--dot", o.dot_dir, "write the final STC and its sheet diagrams (DOT and SVG) into this directory");
+  app.add_option("--dot", o.dot_dir, "write the STC of the mesh written (else the weave's last state) and its sheet diagrams (DOT and SVG) into this directory");
   app.add_flag("--dot-steps", o.dot_steps, "also write one picture per rule application into DIR/steps");
   app.add_flag("--no-svg", o.no_svg, "with --dot or --partial: write DOT files only, no SVG");
   app.add_option("--trace", o.trace, "write one line per rule application to this file");
