@@ -64,8 +64,9 @@ struct Input {
 struct Config {
   std::string name;
   /// "": the rule set's own strategy (weave::strategy_of); "random": the same
-  /// with random picks; "no-backtracking": the shipped
-  /// strategies/no_backtracking.strategy; else a spec for Strategy::parse.
+  /// with random picks; "no-backtracking": the same without backtracking
+  /// (for the shipped rules, strategies/no_backtracking.strategy); else a spec
+  /// for Strategy::parse.
   std::string strategy;
   std::uint64_t seed = 0;
   std::size_t attempts = 1;  ///< MeshingOptions::attempts (random restarts)
@@ -172,8 +173,7 @@ engine::Strategy strategy_for(const Config& config, const RuleSet& set) {
   engine::Strategy s;
   if (config.strategy.empty()) s = set.strategy;
   else if (config.strategy == "random") s = set.strategy.with_random_picks();
-  else if (config.strategy == "no-backtracking")
-    s = engine::Strategy::parse((weave::default_rules_dir() / "strategies" / "no_backtracking.strategy").string());
+  else if (config.strategy == "no-backtracking") s = set.strategy.without_backtracking();
   else s = weave::strategy_named(config.strategy);
   s.seed = config.seed;
   return s;

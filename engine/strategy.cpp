@@ -284,4 +284,19 @@ Strategy Strategy::with_random_picks() const {
   return s;
 }
 
+Strategy Strategy::without_backtracking() const {
+  Strategy s = *this;
+  for (auto& p : s.phases)
+    each_node(p.body, [](StrategyNode& n) {
+      if (n.op != StrategyNode::Op::backtrack) return;
+      StrategyNode plain;
+      plain.op = StrategyNode::Op::repeat;
+      plain.pos = n.pos;
+      plain.body = std::move(n.body);
+      n = std::move(plain);
+    });
+  if (s.source.find("no backtracking") == std::string::npos) s.source += " (no backtracking)";
+  return s;
+}
+
 }  // namespace loom::engine

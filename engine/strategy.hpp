@@ -115,6 +115,10 @@ struct Strategy {
   bool random() const;
   /// The same program with every pick random (a pipeline's further attempts).
   Strategy with_random_picks() const;
+  /// The same program with each `backtrack { ... apply }` a `repeat { apply }`:
+  /// the apply runs to a dead end and stays there (an ordering bench's
+  /// baseline, for any rule set).
+  Strategy without_backtracking() const;
 };
 
 }  // namespace loom::engine

@@ -73,6 +73,24 @@ TEST_CASE("the shipped strategies parse into their phases") {
   const auto plain =
       engine::Strategy::parse((weave::default_rules_dir() / "strategies" / "no_backtracking.strategy").string());
   CHECK(plain.phases.at(0).body.at(0).op == engine::StrategyNode::Op::repeat);
+
+  // Backtracking taken out of the default is the shipped no_backtracking
+  // file, and of any rule set's strategy leaves no backtrack node.
+  const auto unwound = s.without_backtracking();
+  REQUIRE(unwound.phases.size() == plain.phases.size());
+  for (std::size_t p = 0; p < plain.phases.size(); ++p) {
+    std::vector<std::pair<engine::StrategyNode::Op, std::vector<std::string>>> a, b;
+    each_node(unwound.phases[p].body, [&](const engine::StrategyNode& n) { a.push_back({n.op, n.rules}); });
+    each_node(plain.phases[p].body, [&](const engine::StrategyNode& n) { b.push_back({n.op, n.rules}); });
+    CHECK(a == b);
+  }
+  CHECK(unwound.name().ends_with(" (no backtracking)"));
+  for (const auto& spec : {"priority", "random", "sequence:seam,cross"}) {
+    bool backtracks = false;
+    for (const auto& phase : weave::strategy_named(spec).without_backtracking().phases)
+      each_node(phase.body, [&](const engine::StrategyNode& n) { backtracks |= n.op == engine::StrategyNode::Op::backtrack; });
+    CHECK_FALSE_MESSAGE(backtracks, spec);
+  }
 }
 
 TEST_CASE("a broken strategy is refused with file:line:column and what was expected") {
