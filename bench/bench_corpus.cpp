@@ -167,6 +167,7 @@ struct RuleSet {
   std::string name;
   std::vector<engine::Rule> rules;
   engine::Strategy strategy;  ///< its own (weave::strategy_of)
+  fs::path dir;               ///< where its closure database is (the template rule's)
 };
 
 engine::Strategy strategy_for(const Config& config, const RuleSet& set) {
@@ -193,7 +194,7 @@ std::vector<RuleSet> load_rule_sets(const std::vector<std::string>& dirs) {
   for (std::size_t i = 0; i < paths.size(); ++i) {
     bool shared = std::count(names.begin(), names.end(), names[i]) > 1;
     sets.push_back({shared ? paths[i] : names[i], engine::load_rule_dir(paths[i], *stc::StcSchema::get().schema),
-                    weave::strategy_of(paths[i])});
+                    weave::strategy_of(paths[i]), paths[i]});
   }
   return sets;
 }
@@ -209,6 +210,7 @@ Row run_one(const Input& input, const QuadSurface& surface, const Config& config
   r.config = several_sets ? set.name + ":" + config.name : config.name;
   r.rules = set.name;
   pipeline::MeshingOptions options;
+  options.database = pipeline::default_meshing_options(set.dir).database;
   options.weave.strategy = strategy_for(config, set);
   options.attempts = config.attempts;
   options.weave.max_steps = max_steps;

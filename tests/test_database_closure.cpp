@@ -3,6 +3,8 @@
 // (src/weave/database_closure.hpp).
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
 #include "src/check/validity.hpp"
@@ -77,7 +79,7 @@ TEST_CASE("with the template rule the weave closes small surfaces that the shipp
 }
 
 TEST_CASE("loom weave's pipeline reports the template rule's hexes as from the database, not woven") {
-  pipeline::MeshingOptions options;
+  pipeline::MeshingOptions options = pipeline::default_meshing_options();
   options.closure = pipeline::Closure::none;
   const pipeline::MeshingResult r = pipeline::mesh_surface(gen::randquad(12, 1), rules_with_template(), options);
   REQUIRE(r.mesh);
@@ -91,4 +93,14 @@ TEST_CASE("loom weave's pipeline reports the template rule's hexes as from the d
                                                                    .code)
                                                          ->hexes()));
   CHECK(woven == 0);
+}
+
+TEST_CASE("the template rule reads the pipeline's database: with none, it closes nothing") {
+  pipeline::MeshingOptions options = pipeline::default_meshing_options();
+  options.closure = pipeline::Closure::none;
+  options.attempts = 1;
+  options.database.clear();  // as for a rules directory without closure/database.txt
+  const pipeline::MeshingResult r = pipeline::mesh_surface(gen::randquad(12, 1), rules_with_template(), options);
+  CHECK(r.weave.applications.count("database_closure") == 0);
+  CHECK(std::count(r.source.begin(), r.source.end(), closure::HexSource::database) == 0);
 }

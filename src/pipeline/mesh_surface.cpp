@@ -234,7 +234,9 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
   const auto start = std::chrono::steady_clock::now();
   MeshingResult r;
   r.prefer = options.prefer;
+  Resources res(options);
   weave::WeaveOptions attempt = options.weave;
+  if (!attempt.database) attempt.database = [&res] { return res.database(); };
   const std::uint64_t first_seed = options.weave.strategy.random() ? options.weave.strategy.seed : 0;
   std::optional<HexMesh> best_woven;  // of the attempt that left the fewest whiskers
   std::vector<HexSource> best_woven_source;
@@ -269,7 +271,6 @@ MeshingResult mesh_surface(const QuadSurface& surface, std::vector<engine::Rule>
   if (cut_if_open && !r.combinatorially_valid())
     mesh_through_cuts(r, surface, rules, options);
   else if (options.closure != Closure::none) {
-    Resources res(options);
     if (!r.combinatorially_valid()) close_cavities_of(r, surface, *best_woven, best_woven_source, res, options);
     const bool small = surface.quads.size() <= kDirectSearchQuads;
     auto budget = [&options](std::size_t expansions) {

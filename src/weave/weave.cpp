@@ -78,7 +78,7 @@ Vec3 placed(const stc::Stc& stc, engine::Id node, const char* action) {
 
 }  // namespace
 
-engine::Actions weave_actions(stc::Stc& stc) {
+engine::Actions weave_actions(stc::Stc& stc, std::function<const closure::Database*()> database) {
   engine::Actions actions;
   add_geometric_measures(actions, stc);
   const engine::KindId node = stc.ids().node, hex = stc.ids().hex;
@@ -116,18 +116,22 @@ engine::Actions weave_actions(stc::Stc& stc) {
   });
   // closes_from_database(f): the front component of whisker f is closed and
   // small, and the closure database's mesh for it fits (database_closure.hpp);
-  // close_from_database(f) puts that mesh in. The database is the one under
-  // the default rules directory (LOOM_RULES), read on first use.
+  // close_from_database(f) puts that mesh in. The database is the one
+  // `database` gives, else the default rules directory's, read on first use.
   const engine::KindId face = stc.ids().face;
-  auto database = []() -> const closure::Database& {
-    static const closure::Database db = closure::Database::load(closure::database_file(default_rules_dir()));
-    return db;
+  auto db = [database = std::move(database)]() -> const closure::Database* {
+    if (database) return database();
+    static const closure::Database shipped = closure::Database::load(closure::database_file(default_rules_dir()));
+    return &shipped;
   };
-  actions.add_test("closes_from_database", {{"f", face}}, [&stc, database](engine::Graph&, std::span<const engine::Id> args) {
-    return closes_from_database(stc, args[0], database());
+  actions.add_test("closes_from_database", {{"f", face}}, [&stc, db](engine::Graph&, std::span<const engine::Id> args) {
+    const closure::Database* d = db();
+    return d && closes_from_database(stc, args[0], *d);
   });
-  actions.add("close_from_database", {{"f", face}}, [&stc, database](engine::Graph&, std::span<const engine::Id> args) {
-    close_from_database(stc, args[0], database());
+  actions.add("close_from_database", {{"f", face}}, [&stc, db](engine::Graph&, std::span<const engine::Id> args) {
+    const closure::Database* d = db();
+    if (!d) throw std::runtime_error("close_from_database: the rules directory has no closure database (closure/database.txt)");
+    close_from_database(stc, args[0], *d);
   });
   // split_pinched(n): one node per group of n's hexes that meet only at n;
   // each part's boundary flag is 1 exactly when it holds a boundary face.
@@ -177,7 +181,7 @@ const std::vector<std::string>& strategy_measures() {
 
 WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOptions& options) {
   WeaveResult result;
-  engine::Engine eng(stc.graph(), std::move(rules), weave_actions(stc), options.strategy.seed);
+  engine::Engine eng(stc.graph(), std::move(rules), weave_actions(stc, options.database), options.strategy.seed);
   if (stc::invariant_checks_on() || !options.check_rules.empty())
     eng.check_after([&stc](const engine::Graph&) { return stc.check_invariants(); },
                     stc::invariant_checks_on() ? std::vector<std::string>{} : options.check_rules);

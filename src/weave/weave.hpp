@@ -14,6 +14,10 @@
 #include "engine/strategy_run.hpp"
 #include "src/stc/stc.hpp"
 
+namespace loom::closure {
+class Database;
+}
+
 namespace loom::weave {
 
 struct WeaveResult;
@@ -44,6 +48,11 @@ struct WeaveOptions {
   /// Called for each application after_step saw that the strategy then
   /// undid (a backtrack), newest first (engine::StrategyDomain::after_undo).
   std::function<void(std::size_t step)> after_undo;
+  /// The closure database of the template rule's actions (closes_from_database,
+  /// close_from_database; rules/closure/database.rule), asked when a rule
+  /// first needs it; null: none, and the test fails. Unset: the one in
+  /// default_rules_dir(). The pipeline passes the one its rules directory has.
+  std::function<const closure::Database*()> database;
 };
 
 struct WeaveResult {
@@ -69,7 +78,8 @@ const std::vector<std::string>& strategy_measures();
 
 /// The domain's named actions, tests and measures that rules may use
 /// (place_hex_corner; measures.hpp: angle, corner_sj, ...).
-engine::Actions weave_actions(stc::Stc& stc);
+/// `database` as WeaveOptions::database.
+engine::Actions weave_actions(stc::Stc& stc, std::function<const closure::Database*()> database = {});
 
 /// Weaves `stc` in place with `rules`.
 WeaveResult weave(stc::Stc& stc, std::vector<engine::Rule> rules, const WeaveOptions& options);
