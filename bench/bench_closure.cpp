@@ -256,9 +256,16 @@ int main(int argc, char** argv) {
 
   closure::Database db;
   if (!database.empty()) db = closure::Database::load(database);
-  const auto rules = engine::load_rule_dir(rules_dir, *stc::StcSchema::get().schema);
-  const engine::Strategy weave_strategy = strategy.empty() ? weave::strategy_of(rules_dir) : weave::strategy_named(strategy);
-  engine::check_strategy(weave_strategy, rules, weave::strategy_measures());
+  std::vector<engine::Rule> rules;
+  engine::Strategy weave_strategy;
+  try {
+    rules = engine::load_rule_dir(rules_dir, *stc::StcSchema::get().schema);
+    weave_strategy = strategy.empty() ? weave::strategy_of(rules_dir) : weave::strategy_named(strategy);
+    engine::check_strategy(weave_strategy, rules, weave::strategy_measures());
+  } catch (const std::exception& e) {  // a broken rule or strategy file: one line, as loom weave
+    std::cerr << "bench_closure: " << e.what() << "\n";
+    return 2;
+  }
   std::cerr << fmt::format("{} inputs; database {} boundaries; budget {} expansions, weight {}\n", inputs.size(), db.size(),
                            options.limits.max_expansions, options.limits.weight);
   // A run stopped halfway (a session's end, a node's time limit) goes on where it stopped.
