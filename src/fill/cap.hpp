@@ -47,8 +47,9 @@ Cap parse_cap(std::string_view text, const std::string& where);
 /// the file and line of a malformed line, and when some even edge has no cap.
 std::vector<Cap> load_caps(const std::filesystem::path& dir);
 
-/// The caps `loom weave` uses: fill/ in its rules directory
-/// (weave::default_rules_dir: $LOOM_RULES, else the shipped rules/).
+/// fill/ in weave::default_rules_dir() ($LOOM_RULES, else the shipped rules/):
+/// the caps `loom weave` uses unless `--rules DIR` brings DIR/fill
+/// (pipeline::default_meshing_options).
 std::filesystem::path default_caps_dir();
 
 }  // namespace loom::fill
