@@ -30,10 +30,12 @@ QuadSurface unit_cube() {
   return s;
 }
 
-CliResult run_cli(const std::string& args) {
+CliResult run_cli(const std::string& args) { return run_shell(std::string(LOOM_CLI) + " " + args); }
+
+CliResult run_shell(const std::string& command) {
   ScratchDir io("cli");
   auto out = io / "out.txt", err = io / "err.txt";
-  std::string cmd = std::string(LOOM_CLI) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+  std::string cmd = command + " >" + out.string() + " 2>" + err.string() + " </dev/null";
   int raw = std::system(cmd.c_str());
   CliResult r;
   if (WIFEXITED(raw)) r.status = WEXITSTATUS(raw);

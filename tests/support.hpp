@@ -22,6 +22,9 @@ struct CliResult {
 
 /// Runs `build/loom ARGS` through the shell (args are passed verbatim).
 CliResult run_cli(const std::string& args);
+/// Runs a shell command line, stdin from /dev/null, stdout and stderr captured
+/// (the redirections bind to its last simple command).
+CliResult run_shell(const std::string& command);
 /// run_cli() with the STC invariant checks off, as in a user's run (ctest
 /// turns them on for every rule), so that only what such a run checks is checked.
 CliResult run_cli_unchecked(const std::string& args);

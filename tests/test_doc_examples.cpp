@@ -15,7 +15,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -115,19 +114,9 @@ std::string setup_of(std::string& text) {
 }
 
 CliResult run_in(const fs::path& dir, const std::string& command) {
-  const fs::path out = dir / ".out", err = dir / ".err";
   // The user's run: the invariant checks ctest turns on are not part of it.
-  const std::string shell =
-      fmt::format("cd '{0}' && PATH='{0}/bin':\"$PATH\" LOOM_CHECK_INVARIANTS=0 {1} >'{2}' 2>'{3}' </dev/null",
-                  dir.string(), command, out.string(), err.string());
-  const int raw = std::system(shell.c_str());
-  CliResult r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.out = loom::test::slurp(out);
-  r.err = loom::test::slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
+  return loom::test::run_shell(
+      fmt::format("cd '{0}' && PATH='{0}/bin':\"$PATH\" LOOM_CHECK_INVARIANTS=0 {1}", dir.string(), command));
 }
 
 /// Runs a document's examples; returns how many commands it has.

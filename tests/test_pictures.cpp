@@ -95,6 +95,14 @@ TEST_CASE("--dot draws the mesh written, closure's and the layer's hexes include
   // --partial still draws the weave's own state, which is not the mesh.
   CHECK(hexes_drawn(dir / "s.partial" / "stc.dot") != 52);
 
+  // Woven, then a boundary layer: 16 woven + 40 pillow hexes drawn.
+  REQUIRE(run_cli("gen cylinder 2 2 -o " + (dir / "c.obj").string()).status == 0);
+  r = run_cli("weave " + (dir / "c.obj").string() + " -o " + (dir / "c.vtk").string() + " --no-svg --dot " +
+              (dir / "layer").string());
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("(+40 hexes)") != std::string::npos);
+  CHECK(hexes_drawn(dir / "layer" / "stc.dot") == 56);
+
   r = run_cli("weave " + (dir / "s.obj").string() + " -o " + (dir / "t.vtk").string() +
               " --closure none --no-svg --dot " + (dir / "open").string());
   CHECK(r.status == 1);

@@ -185,12 +185,16 @@ int run_weave(const WeaveCommandOptions& o, const std::function<QuadSurface(RunB
                                 report_json(o.input, {bound, loom::surface_half_thickness(surface)}, result).dump(2) + "\n");
   loom::stc::PictureFailures pictures = steps ? steps->picture_failures() : loom::stc::PictureFailures{};
   const std::size_t svg_limit = o.no_svg ? 0 : 4000;
-  // --dot draws the mesh that is written (the dual of all its hexes, closure's
-  // and the boundary layer's included); with no mesh, the weave's last state,
-  // which shows where it stopped (--partial draws that state beside a mesh).
-  if (!o.dot_dir.empty())
-    loom::stc::write_stc_dot(result.combinatorially_valid() ? loom::stc::build_from_hex_mesh(*result.mesh) : result.stc,
+  // --dot draws the mesh that is written. When the weave made all of it, that
+  // is the weave's STC, numbered as the step pictures are; when closure or the
+  // boundary layer added hexes, it is the dual built from the mesh. With no
+  // mesh, it is the weave's last state, which shows where it stopped.
+  if (!o.dot_dir.empty()) {
+    const bool woven_whole = result.mesh && result.stc.hexes() == result.mesh->hexes.size() && result.made_by == "woven";
+    loom::stc::write_stc_dot(result.combinatorially_valid() && !woven_whole ? loom::stc::build_from_hex_mesh(*result.mesh)
+                                                                           : result.stc,
                              o.dot_dir, pictures, svg_limit);
+  }
   // The weave's partial state, also when the fill then meshed the surface.
   if (o.partial && !result.weave.closed) write_partial(o.output, result.stc, pictures, svg_limit);
   if (pictures.count) std::cerr << pictures.warning() << "\n";
